@@ -1,0 +1,28 @@
+// Plain geometry value types shared by every stage: a planar point and an index edge.
+#pragma once
+
+#include <array>
+#include <cmath>
+
+namespace curvebench {
+
+struct Point2 {
+  double x = 0.0;
+  double y = 0.0;
+  friend bool operator==(const Point2&, const Point2&) = default;
+};
+
+inline Point2 operator+(Point2 a, Point2 b) { return {a.x + b.x, a.y + b.y}; }
+inline Point2 operator-(Point2 a, Point2 b) { return {a.x - b.x, a.y - b.y}; }
+inline Point2 operator*(double s, Point2 a) { return {s * a.x, s * a.y}; }
+inline double dot(Point2 a, Point2 b) { return a.x * b.x + a.y * b.y; }
+inline double cross(Point2 a, Point2 b) { return a.x * b.y - a.y * b.x; }
+inline double norm(Point2 a) { return std::hypot(a.x, a.y); }
+inline double distance(Point2 a, Point2 b) { return norm(a - b); }
+
+// An undirected edge between two point indices, stored with first < second.
+using Edge = std::array<int, 2>;
+
+inline Edge make_edge(int a, int b) { return a < b ? Edge{a, b} : Edge{b, a}; }
+
+}  // namespace curvebench

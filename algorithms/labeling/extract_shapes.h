@@ -1,0 +1,22 @@
+// Algorithm 2, lines 9-10: the curve and the interior medial axis read off the labels.
+//
+// In:  Delaunay/Voronoi arrays and the final vertex labels.
+// Out: curve edges (site pairs) = Delaunay edges whose dual Voronoi edge joins an inner and
+//      an outer vertex (a hull edge's dual joins its triangle to the infinite, outer vertex);
+//      medial axis = the inner Voronoi vertices with their radii and the Voronoi edges joining
+//      two inner vertices. Coinciding vertices (co-circular sites, joined by zero-length
+//      Voronoi edges) are merged into one medial-axis vertex.
+#pragma once
+
+#include <vector>
+
+#include "core/reconstruction.h"
+#include "labeling/label_voronoi_vertices.h"
+
+namespace curvebench {
+
+std::vector<Edge> extract_curve_edges(const DelaunayVoronoi& dv, const VoronoiLabels& labels);
+
+MedialAxis extract_interior_medial_axis(const DelaunayVoronoi& dv, const VoronoiLabels& labels);
+
+}  // namespace curvebench

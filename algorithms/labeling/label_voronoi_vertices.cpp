@@ -1,0 +1,104 @@
+#include "labeling/label_voronoi_vertices.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace curvebench {
+namespace {
+
+bool has_hull_edge(const DelaunayVoronoi& dv, int t) {
+  const auto& nb = dv.neighbors[t];
+  return nb[0] == kInfinite || nb[1] == kInfinite || nb[2] == kInfinite;
+}
+
+// Definition 5 (label transition rule), applied to `vertex` in the cell of every one of its
+// three samples that already has a finite source vertex (reading note 1: the test comes
+// before pairing, otherwise the vertex would be its own sample's source and the rule would
+// test nothing). The vertex is inner if it lies strictly across the estimated tangent line
+// of any of them. A vertex exactly on a tangent line is on neither side and stays outer.
+// Samples of unbounded cells are paired with the infinite vertex, whose direction is not
+// one point but the whole wedge of the cell's two rays: they impose no constraint.
+bool crosses_a_tangent_line(const DelaunayVoronoi& dv, const VoronoiLabels& labels, int vertex) {
+  for (int site : dv.triangles[vertex]) {
+    const int source = labels.source_vertex[site];
+    if (source >= 0 && source != vertex && side_of_tangent_line(dv, site, source, vertex) < 0) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
+  const int triangles = dv.triangle_count();
+  VoronoiLabels labels;
+  labels.inner.assign(triangles, 0);  // Algorithm 2, line 2: every vertex starts outer
+  labels.source_vertex.assign(dv.site_count(), kUnpaired);
+  for (int s = 0; s < dv.site_count(); ++s) {
+    if (dv.on_hull[s]) labels.source_vertex[s] = kInfinite;  // Algorithm 2, line 3
+  }
+
+  // Extreme Voronoi vertices. Observation 1 assumes one bounded cell per EVV, but triangles
+  // with two hull edges exist, so every triangle with a hull edge is one (reading note 6).
+  // Section 3.3: EVVs inside Conv(P) belong to convex portions (Lemma 5.1) and are inner;
+  // a vertex on the hull boundary counts as inside. The others start the walks (Line 4).
+  std::vector<int> queue;
+  for (int t = 0; t < triangles; ++t) {
+    if (!has_hull_edge(dv, t)) continue;
+    ++labels.extreme_vertices;
+    if (in_convex_hull(dv, dv.circumcenters[t])) {
+      labels.inner[t] = 1;
+    } else {
+      queue.push_back(t);
+    }
+  }
+  labels.queued_vertices = static_cast<int>(queue.size());
+  // Priorities never change while labeling, so the heap of Algorithm 2 is a sorted list:
+  // descending circumradius, ties by triangle index for reproducibility.
+  std::sort(queue.begin(), queue.end(), [&](int a, int b) {
+    return dv.circumradii[a] > dv.circumradii[b] || (dv.circumradii[a] == dv.circumradii[b] && a < b);
+  });
+
+  // Algorithm 1 with an explicit stack instead of recursion (a million samples would
+  // overflow the call stack). Neighbours are pushed in reverse so they are taken in the
+  // order the recursive calls would make; a vertex is skipped if an earlier branch reached it.
+  std::vector<std::uint8_t> visited(triangles, 0);
+  std::vector<int> stack;
+  for (int root : queue) {
+    if (visited[root]) continue;
+    stack.push_back(root);
+    while (!stack.empty()) {
+      const int vertex = stack.back();
+      stack.pop_back();
+      if (visited[vertex]) continue;
+      visited[vertex] = 1;
+      ++labels.visited_vertices;
+      if (crosses_a_tangent_line(dv, labels, vertex)) {
+        // Reading note 2: the walk stops at a vertex that just became inner; walking on
+        // would carry the outer label into the interior of the curve.
+        labels.inner[vertex] = 1;
+        continue;
+      }
+      // Algorithm 1, lines 1-2. Reached from an outer neighbour, a vertex shares two samples
+      // with it that are already paired, so at most one sample is unpaired; only a queue root
+      // can have more (its hull samples are paired with the infinite vertex), and every
+      // unpaired sample takes this vertex, the first outer vertex found in its cell, as source.
+      // A vertex whose samples are all paired pairs none and the walk goes on through it.
+      for (int site : dv.triangles[vertex]) {
+        if (labels.source_vertex[site] == kUnpaired) labels.source_vertex[site] = vertex;
+      }
+      for (int k = 2; k >= 0; --k) {
+        const int next = dv.neighbors[vertex][k];
+        if (next != kInfinite && !visited[next] && !labels.inner[next]) stack.push_back(next);
+      }
+    }
+  }
+
+  // Reading note 3: a vertex no walk reached lies in the interior of a convex portion (the
+  // walks cover every pseudo-concavity and the space between curves), so it is inner.
+  for (int t = 0; t < triangles; ++t) {
+    if (!visited[t]) labels.inner[t] = 1;
+  }
+  return labels;
+}
+
+}  // namespace curvebench

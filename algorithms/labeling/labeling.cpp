@@ -1,0 +1,44 @@
+#include "labeling/labeling.h"
+
+#include "core/phase_timer.h"
+#include "labeling/dominant_points.h"
+#include "labeling/extract_shapes.h"
+#include "labeling/label_voronoi_vertices.h"
+
+namespace curvebench {
+namespace {
+
+class Labeling final : public Algorithm {
+ public:
+  std::string name() const override { return "labeling"; }
+  std::string description() const override {
+    return "Incremental Voronoi-vertex labeling (Peethambaran, Parakkat, Tagliasacchi, Wang, Muthuganapathy; CGF 2019)";
+  }
+  unsigned outputs() const override { return kCurve | kMedialAxis | kDominantPoints; }
+
+  Reconstruction reconstruct(std::span<const Point2> points, const Parameters& params) const override {
+    resolve_parameters(parameters(), params, name());
+    PhaseTimer timer;
+    const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+    timer.lap("delaunay");
+    require_triangulation(dv, name());
+    const VoronoiLabels labels = label_voronoi_vertices(dv);
+    timer.lap("labeling");
+    Reconstruction result;
+    result.distinct_points = dv.site_count();
+    result.curve_edges = to_input_indices(dv, extract_curve_edges(dv, labels));
+    result.medial_axis = extract_interior_medial_axis(dv, labels);
+    std::vector<int> dominant = detect_dominant_points(dv, labels);
+    for (int& site : dominant) site = dv.input_of_site[site];
+    result.dominant_points = std::move(dominant);
+    timer.lap("extract");
+    result.timing_ms = timer.finish();
+    return result;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Algorithm> make_labeling_algorithm() { return std::make_unique<Labeling>(); }
+
+}  // namespace curvebench

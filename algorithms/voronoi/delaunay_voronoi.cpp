@@ -1,0 +1,241 @@
+#include "voronoi/delaunay_voronoi.h"
+
+#include <CGAL/Exact_rational.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <utility>
+
+#include "core/algorithm.h"
+#include "voronoi/cgal_kernel.h"
+
+namespace curvebench {
+namespace {
+
+// Sites are the distinct input points in order of first occurrence. Only called when the
+// triangulation reports fewer vertices than input points, so the common case pays nothing.
+void deduplicate(std::span<const Point2> points, DelaunayVoronoi& dv) {
+  const int n = static_cast<int>(points.size());
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return points[a].x < points[b].x || (points[a].x == points[b].x && points[a].y < points[b].y);
+  });
+  std::vector<int> first_of(n);  // input index -> first input index with the same point
+  for (int k = 0; k < n;) {
+    int end = k;
+    while (end < n && points[order[end]] == points[order[k]]) ++end;
+    for (int j = k; j < end; ++j) first_of[order[j]] = order[k];  // stable: order[k] is smallest
+    k = end;
+  }
+  dv.site_of_input.assign(n, -1);
+  dv.input_of_site.clear();
+  dv.sites.clear();
+  for (int i = 0; i < n; ++i) {
+    if (first_of[i] == i) {
+      dv.site_of_input[i] = static_cast<int>(dv.sites.size());
+      dv.input_of_site.push_back(i);
+      dv.sites.push_back(points[i]);
+    } else {
+      dv.site_of_input[i] = dv.site_of_input[first_of[i]];
+    }
+  }
+}
+
+void circumcircle(Point2 a, Point2 b, Point2 c, Point2& center, double& radius) {
+  const Point2 ab = b - a, ac = c - a;
+  const double d = 2.0 * cross(ab, ac);
+  const double ab2 = dot(ab, ab), ac2 = dot(ac, ac);
+  const Point2 u{(ac.y * ab2 - ab.y * ac2) / d, (ab.x * ac2 - ac.x * ab2) / d};
+  center = a + u;
+  radius = norm(u);
+}
+
+void insert_indexed(cgal::Delaunay& dt, std::span<const Point2> points) {
+  std::vector<std::pair<cgal::Point, int>> indexed;
+  indexed.reserve(points.size());
+  for (int i = 0; i < static_cast<int>(points.size()); ++i) indexed.emplace_back(cgal::Point(points[i].x, points[i].y), i);
+  dt.insert(indexed.begin(), indexed.end());
+}
+
+}  // namespace
+
+int bare_delaunay_vertex_count(std::span<const Point2> points) {
+  cgal::Delaunay dt;
+  insert_indexed(dt, points);
+  return static_cast<int>(dt.number_of_vertices());
+}
+
+DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points) {
+  DelaunayVoronoi dv;
+  const int n = static_cast<int>(points.size());
+  cgal::Delaunay dt;
+  insert_indexed(dt, points);
+
+  if (static_cast<int>(dt.number_of_vertices()) == n) {
+    dv.sites.assign(points.begin(), points.end());
+    dv.input_of_site.resize(n);
+    std::iota(dv.input_of_site.begin(), dv.input_of_site.end(), 0);
+    dv.site_of_input = dv.input_of_site;
+  } else {
+    // A duplicate's vertex carries the index of whichever copy CGAL inserted last.
+    deduplicate(points, dv);
+    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+      v->info() = dv.site_of_input[v->info()];
+    }
+  }
+
+  const int sites = dv.site_count();
+  dv.dimension = dt.dimension();
+  dv.site_triangle.assign(sites, -1);
+  dv.on_hull.assign(sites, 0);
+  if (dv.dimension < 2) {
+    std::fill(dv.on_hull.begin(), dv.on_hull.end(), 1);
+    return dv;
+  }
+
+  int t = 0;
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) f->info() = t++;
+  dv.triangles.resize(t);
+  dv.neighbors.resize(t);
+  dv.circumcenters.resize(t);
+  dv.circumradii.resize(t);
+  std::vector<int> hull_next(sites, -1);
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    const int id = f->info();
+    auto& tri = dv.triangles[id];
+    auto& nb = dv.neighbors[id];
+    for (int i = 0; i < 3; ++i) {
+      tri[i] = f->vertex(i)->info();
+      const auto g = f->neighbor(i);
+      nb[i] = dt.is_infinite(g) ? kInfinite : g->info();
+    }
+    for (int i = 0; i < 3; ++i) {
+      if (dv.site_triangle[tri[i]] < 0) dv.site_triangle[tri[i]] = id;
+    }
+    for (int k = 0; k < 3; ++k) {
+      if (nb[k] != kInfinite) continue;
+      // Hull edge from corner k+1 to k+2, counter-clockwise along the hull. For the site at
+      // corner k+1 this is the clockwise-most edge of its fan: its walk starts here.
+      const int from = tri[(k + 1) % 3], to = tri[(k + 2) % 3];
+      dv.on_hull[from] = 1;
+      dv.site_triangle[from] = id;
+      hull_next[from] = to;
+    }
+    circumcircle(dv.sites[tri[0]], dv.sites[tri[1]], dv.sites[tri[2]], dv.circumcenters[id], dv.circumradii[id]);
+  }
+  const int start = static_cast<int>(std::find(dv.on_hull.begin(), dv.on_hull.end(), 1) - dv.on_hull.begin());
+  for (int s = start; s >= 0 && s < sites;) {
+    dv.hull.push_back(s);
+    s = hull_next[s];
+    if (s == start) break;
+  }
+  return dv;
+}
+
+void require_triangulation(const DelaunayVoronoi& dv, const std::string& algorithm) {
+  if (dv.dimension == 2) return;
+  const std::string count = std::to_string(dv.site_count());
+  if (dv.site_count() < 3) {
+    throw InputError(algorithm + " needs at least 3 distinct points, the input has " + count);
+  }
+  throw InputError(algorithm + ": all " + count + " distinct points are collinear, so they bound no closed curve");
+}
+
+std::vector<Edge> to_input_indices(const DelaunayVoronoi& dv, std::vector<Edge> site_edges) {
+  for (auto& e : site_edges) e = make_edge(dv.input_of_site[e[0]], dv.input_of_site[e[1]]);
+  std::sort(site_edges.begin(), site_edges.end());
+  return site_edges;
+}
+
+void voronoi_cell(const DelaunayVoronoi& dv, int site, std::vector<int>& cell) {
+  cell.clear();
+  const int first = dv.site_triangle[site];
+  if (first < 0) return;
+  int t = first;
+  do {
+    cell.push_back(t);
+    t = dv.neighbors[t][(corner_of(dv, t, site) + 1) % 3];  // next triangle counter-clockwise
+  } while (t != kInfinite && t != first);
+}
+
+bool is_degenerate_voronoi_edge(const DelaunayVoronoi& dv, int triangle, int corner) {
+  const int other = dv.neighbors[triangle][corner];
+  if (other == kInfinite) return false;
+  const auto& tri = dv.triangles[triangle];
+  const auto& opp = dv.triangles[other];
+  const int apex = opp[0] != tri[(corner + 1) % 3] && opp[0] != tri[(corner + 2) % 3]
+                       ? opp[0]
+                       : (opp[1] != tri[(corner + 1) % 3] && opp[1] != tri[(corner + 2) % 3] ? opp[1] : opp[2]);
+  auto P = [&](int s) { return cgal::Point(dv.sites[s].x, dv.sites[s].y); };
+  return CGAL::side_of_oriented_circle(P(tri[0]), P(tri[1]), P(tri[2]), P(apex)) == CGAL::ON_ORIENTED_BOUNDARY;
+}
+
+namespace {
+
+// Bound on the absolute error of the double circumcenter of `triangle`, with a wide margin:
+// the computation loses about |ab||ac|/|cross(ab, ac)| in relative precision.
+double circumcenter_error(const DelaunayVoronoi& dv, int triangle) {
+  const auto& tri = dv.triangles[triangle];
+  const Point2 a = dv.sites[tri[0]];
+  const Point2 ab = dv.sites[tri[1]] - a, ac = dv.sites[tri[2]] - a;
+  const double area2 = std::abs(cross(ab, ac));
+  const double conditioning = norm(ab) * norm(ac) / area2;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  return 64.0 * eps * (norm(a) + dv.circumradii[triangle] * (1.0 + conditioning));
+}
+
+int exact_side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source, int query) {
+  using Q = CGAL::Exact_rational;
+  const Point2 p = dv.sites[site];
+  auto offset = [&](int triangle, Q& x, Q& y) {  // circumcenter(triangle) - p, exactly
+    const auto& tri = dv.triangles[triangle];
+    const Q ax(dv.sites[tri[0]].x), ay(dv.sites[tri[0]].y);
+    const Q bx = Q(dv.sites[tri[1]].x) - ax, by = Q(dv.sites[tri[1]].y) - ay;
+    const Q cx = Q(dv.sites[tri[2]].x) - ax, cy = Q(dv.sites[tri[2]].y) - ay;
+    const Q d = 2 * (bx * cy - by * cx);
+    const Q b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    x = ax + (cy * b2 - by * c2) / d - Q(p.x);
+    y = ay + (bx * c2 - cx * b2) / d - Q(p.y);
+  };
+  Q sx, sy, qx, qy;
+  offset(source, sx, sy);
+  offset(query, qx, qy);
+  return CGAL::sign(sx * qx + sy * qy);
+}
+
+}  // namespace
+
+int side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source_triangle, int query_triangle) {
+  const Point2 p = dv.sites[site];
+  const Point2 v = dv.circumcenters[source_triangle] - p;
+  const Point2 u = dv.circumcenters[query_triangle] - p;
+  const double value = dot(u, v);
+  const double eu = circumcenter_error(dv, query_triangle) + 4.0 * std::numeric_limits<double>::epsilon() * norm(p);
+  const double ev = circumcenter_error(dv, source_triangle) + 4.0 * std::numeric_limits<double>::epsilon() * norm(p);
+  const double bound = eu * norm(v) + ev * norm(u) + eu * ev;
+  if (std::isfinite(value) && std::isfinite(bound) && std::abs(value) > bound) return value > 0 ? 1 : -1;
+  return exact_side_of_tangent_line(dv, site, source_triangle, query_triangle);
+}
+
+bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q) {
+  const auto& h = dv.hull;
+  const int m = static_cast<int>(h.size());
+  if (dv.dimension < 2 || m < 3) return false;
+  auto P = [&](int s) { return cgal::Point(dv.sites[s].x, dv.sites[s].y); };
+  const cgal::Point query(q.x, q.y);
+  const cgal::Point origin = P(h[0]);
+  if (CGAL::orientation(origin, P(h[1]), query) == CGAL::RIGHT_TURN) return false;
+  if (CGAL::orientation(origin, P(h[m - 1]), query) == CGAL::LEFT_TURN) return false;
+  // Largest i in [1, m-2] with query left of or on the ray origin -> h[i]: the fan wedge.
+  int lo = 1, hi = m - 2;
+  while (lo < hi) {
+    const int mid = (lo + hi + 1) / 2;
+    if (CGAL::orientation(origin, P(h[mid]), query) != CGAL::RIGHT_TURN) lo = mid; else hi = mid - 1;
+  }
+  return CGAL::orientation(P(h[lo]), P(h[lo + 1]), query) != CGAL::RIGHT_TURN;
+}
+
+}  // namespace curvebench

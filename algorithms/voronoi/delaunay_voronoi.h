@@ -1,0 +1,91 @@
+// The shared Delaunay/Voronoi layer: the only place (with nearest_site.cpp) that includes
+// CGAL's triangulation headers. It builds CGAL::Delaunay_triangulation_2 with exact
+// predicates once and hands out flat arrays, delaunator style.
+//
+// In:  planar points in any order; duplicates allowed (each maps to its first occurrence).
+// Out: the Delaunay triangulation of the distinct points ("sites") and its dual Voronoi
+//      diagram. Every finite Delaunay triangle is one finite Voronoi vertex, also when four
+//      or more sites are co-circular (a uniformly sampled circle gives n-2 triangles whose
+//      Voronoi vertices coincide): the triangulation CGAL picks among co-circular ones is
+//      kept, so every Voronoi vertex has degree 3 and the zero-length Voronoi edges between
+//      coinciding vertices are reported by is_degenerate_voronoi_edge().
+//
+// Conventions: triangles are counter-clockwise; neighbors[t][i] is the triangle across the
+// edge opposite corner i (the edge from corner i+1 to corner i+2), or kInfinite if that edge
+// is on the convex hull (its dual Voronoi edge is an infinite ray).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/point.h"
+
+namespace curvebench {
+
+inline constexpr int kInfinite = -1;
+
+struct DelaunayVoronoi {
+  // 2: a proper triangulation; 1: all sites collinear (no triangles); 0: one site; -1: none.
+  int dimension = -1;
+
+  std::vector<Point2> sites;          // distinct points in order of first occurrence
+  std::vector<int> input_of_site;     // sites[s] == input[input_of_site[s]]
+  std::vector<int> site_of_input;     // input index -> site index
+
+  std::vector<std::array<int, 3>> triangles;  // site indices, counter-clockwise
+  std::vector<std::array<int, 3>> neighbors;  // triangle across the edge opposite each corner
+  std::vector<Point2> circumcenters;          // the Voronoi vertex of each triangle
+  std::vector<double> circumradii;
+
+  // One triangle incident to each site. For a hull site it is the first triangle of its fan
+  // in counter-clockwise order, so that a walk from it covers the whole unbounded cell.
+  std::vector<int> site_triangle;
+  std::vector<std::uint8_t> on_hull;  // 1 if the site's Voronoi cell is unbounded
+  std::vector<int> hull;              // hull sites in counter-clockwise order (collinear ones included)
+
+  int triangle_count() const { return static_cast<int>(triangles.size()); }
+  int site_count() const { return static_cast<int>(sites.size()); }
+};
+
+DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points);
+
+// The bare CGAL Delaunay construction that build_delaunay_voronoi starts with (range
+// insertion of point-and-index pairs), returning its vertex count: the benchmark's floor.
+int bare_delaunay_vertex_count(std::span<const Point2> points);
+
+// Throws InputError, naming `algorithm`, unless the sites span the plane (three or more
+// distinct points, not all collinear): only then is there a closed curve to look for.
+void require_triangulation(const DelaunayVoronoi& dv, const std::string& algorithm);
+
+// Edges between sites as edges between input indices (first occurrences), sorted.
+std::vector<Edge> to_input_indices(const DelaunayVoronoi& dv, std::vector<Edge> site_edges);
+
+// Corner (0, 1 or 2) of `site` in `triangle`.
+inline int corner_of(const DelaunayVoronoi& dv, int triangle, int site) {
+  const auto& t = dv.triangles[triangle];
+  return t[0] == site ? 0 : (t[1] == site ? 1 : 2);
+}
+
+// The Voronoi cell of `site` as the triangles (= Voronoi vertices) around it in
+// counter-clockwise order, written into `cell`. A bounded cell is cyclic. An unbounded
+// (hull) cell is the open chain from the triangle on one infinite edge to the triangle on
+// the other; the infinite Voronoi vertex closes the cycle between its last and first entry.
+void voronoi_cell(const DelaunayVoronoi& dv, int site, std::vector<int>& cell);
+
+// True if the Voronoi edge dual to the Delaunay edge opposite `corner` of `triangle` has
+// zero length: the four sites of the two triangles are exactly co-circular. False for hull edges.
+bool is_degenerate_voronoi_edge(const DelaunayVoronoi& dv, int triangle, int corner);
+
+// Exact sign of dot(circumcenter(query) - p, circumcenter(source) - p) with p = sites[site]:
+// +1 if the two Voronoi vertices lie on the same side of the line through p orthogonal to
+// (circumcenter(source) - p), -1 on opposite sides, 0 if the query lies on that line.
+// Evaluated in double precision with an exact rational fallback near zero.
+int side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source_triangle, int query_triangle);
+
+// True if `q` lies inside or on the boundary of the convex hull of the sites (dimension 2).
+bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q);
+
+}  // namespace curvebench

@@ -1,0 +1,28 @@
+// Samplers: point sets drawn from a Scene, with the ground truth of where each came from.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "core/point.h"
+#include "generators/closed_curves.h"
+
+namespace curvebench {
+
+struct SampledScene {
+  std::vector<Point2> points;
+  std::vector<int> curve;          // curve index of each point, -1 for an outlier
+  std::vector<double> parameter;   // arc-length fraction in [0, 1) along its curve, NaN for an outlier
+  std::vector<Edge> true_edges;    // consecutive samples along each curve (the correct reconstruction)
+};
+
+// An epsilon-sample in the sense of Definition 4 (every curve point x within epsilon*lfs(x)
+// of a sample), placed at random so that density varies: each step along the curve is a
+// random fraction in [min_step_fraction, 1] of the largest step that keeps the condition.
+SampledScene epsilon_sample(const Scene& scene, double epsilon, std::uint64_t seed, double min_step_fraction = 0.5);
+
+// The smallest epsilon for which `samples` epsilon-samples `scene`, measured over the dense
+// vertices (the certificate the tests check).
+double achieved_epsilon(const Scene& scene, const SampledScene& samples);
+
+}  // namespace curvebench

@@ -1,0 +1,97 @@
+// Small shared helpers for the C++ tests: hand-made point sets and edge-set comparisons.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "core/point.h"
+
+namespace curvebench::testing {
+
+// The edges of the closed polygon through points first, first+1, ..., first+n-1.
+inline std::vector<Edge> cycle_edges(int n, int first = 0) {
+  std::vector<Edge> edges;
+  for (int i = 0; i < n; ++i) edges.push_back(make_edge(first + i, first + (i + 1) % n));
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
+inline std::vector<Edge> sorted(std::vector<Edge> edges) {
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
+// n points at angles 2*pi*k/n on a circle (co-circular up to rounding).
+inline std::vector<Point2> uniform_circle(int n, double radius = 1.0) {
+  std::vector<Point2> points;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * std::numbers::pi * k / n;
+    points.push_back({radius * std::cos(t), radius * std::sin(t)});
+  }
+  return points;
+}
+
+// Every integer point on x^2 + y^2 = r^2, counter-clockwise: exactly co-circular input.
+// r = 5525 = 5^2 * 13 * 17 gives 180 points.
+inline std::vector<Point2> lattice_circle(long r) {
+  std::vector<Point2> points;
+  for (long x = -r; x <= r; ++x) {
+    const long y2 = r * r - x * x;
+    const long y = std::lround(std::sqrt(static_cast<double>(y2)));
+    if (y * y != y2) continue;
+    points.push_back({static_cast<double>(x), static_cast<double>(y)});
+    if (y != 0) points.push_back({static_cast<double>(x), static_cast<double>(-y)});
+  }
+  std::sort(points.begin(), points.end(),
+            [](Point2 a, Point2 b) { return std::atan2(a.y, a.x) < std::atan2(b.y, b.x); });
+  return points;
+}
+
+// n points evenly spaced along the perimeter of a closed polygon, starting at its first vertex.
+inline std::vector<Point2> sample_polygon_evenly(const std::vector<Point2>& polygon, int n) {
+  const int m = static_cast<int>(polygon.size());
+  double perimeter = 0;
+  for (int i = 0; i < m; ++i) perimeter += distance(polygon[i], polygon[(i + 1) % m]);
+  std::vector<Point2> points;
+  int edge = 0;
+  double edge_start = 0;
+  for (int k = 0; k < n; ++k) {
+    const double s = perimeter * k / n;
+    while (edge < m - 1 && s >= edge_start + distance(polygon[edge], polygon[edge + 1]) - 1e-12 * perimeter) {
+      edge_start += distance(polygon[edge], polygon[edge + 1]);
+      ++edge;
+    }
+    const Point2 a = polygon[edge], b = polygon[(edge + 1) % m];
+    const double f = std::clamp((s - edge_start) / distance(a, b), 0.0, 1.0);
+    points.push_back(a + f * (b - a));
+  }
+  return points;
+}
+
+// A five-pointed star: tips at radius 1, inner corners at radius `inner`, a tip first.
+inline std::vector<Point2> star_polygon(double inner) {
+  std::vector<Point2> polygon;
+  for (int k = 0; k < 10; ++k) {
+    const double t = std::numbers::pi / 2 + std::numbers::pi * k / 5;
+    const double r = k % 2 == 0 ? 1.0 : inner;
+    polygon.push_back({r * std::cos(t), r * std::sin(t)});
+  }
+  return polygon;
+}
+
+// Cyclic distance between sample indices along a closed curve of n samples.
+inline int cyclic_distance(int a, int b, int n) {
+  const int d = std::abs(a - b) % n;
+  return std::min(d, n - d);
+}
+
+inline double point_segment_distance(Point2 p, Point2 a, Point2 b) {
+  const Point2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return distance(p, a + t * ab);
+}
+
+}  // namespace curvebench::testing

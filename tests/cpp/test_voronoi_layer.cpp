@@ -1,0 +1,130 @@
+// The shared Delaunay/Voronoi layer: array invariants, cells, duplicates, and the
+// degenerate configurations it promises to handle (co-circular, collinear, ties).
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "test_support.h"
+#include "voronoi/delaunay_voronoi.h"
+#include "voronoi/nearest_site.h"
+
+namespace curvebench {
+namespace {
+
+using testing::lattice_circle;
+using testing::uniform_circle;
+
+void expect_consistent(const DelaunayVoronoi& dv) {
+  ASSERT_EQ(dv.dimension, 2);
+  int cell_vertices = 0;
+  std::vector<int> cell;
+  for (int s = 0; s < dv.site_count(); ++s) {
+    voronoi_cell(dv, s, cell);
+    ASSERT_FALSE(cell.empty()) << "site " << s;
+    for (int t : cell) EXPECT_NE(std::find(dv.triangles[t].begin(), dv.triangles[t].end(), s), dv.triangles[t].end());
+    cell_vertices += static_cast<int>(cell.size());
+  }
+  EXPECT_EQ(cell_vertices, 3 * dv.triangle_count());  // every triangle is in its three sites' cells
+  for (int t = 0; t < dv.triangle_count(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const int other = dv.neighbors[t][k];
+      if (other == kInfinite) continue;
+      const auto& nb = dv.neighbors[other];
+      EXPECT_TRUE(nb[0] == t || nb[1] == t || nb[2] == t) << "neighbour relation is symmetric";
+    }
+    const auto& tri = dv.triangles[t];
+    EXPECT_GT(cross(dv.sites[tri[1]] - dv.sites[tri[0]], dv.sites[tri[2]] - dv.sites[tri[0]]), 0) << "counter-clockwise";
+  }
+  EXPECT_EQ(static_cast<int>(dv.hull.size()), std::count(dv.on_hull.begin(), dv.on_hull.end(), 1));
+}
+
+TEST(VoronoiLayer, ArraysAreConsistentOnRandomAndCocircularInput) {
+  expect_consistent(build_delaunay_voronoi(uniform_circle(50)));
+  expect_consistent(build_delaunay_voronoi(lattice_circle(5525)));
+  std::vector<Point2> grid;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) grid.push_back({double(i), double(j)});
+  expect_consistent(build_delaunay_voronoi(grid));
+}
+
+TEST(VoronoiLayer, ExactlyCocircularSitesGiveOneDegenerateVoronoiVertex) {
+  const auto points = lattice_circle(5525);
+  ASSERT_EQ(points.size(), 180u);
+  const auto dv = build_delaunay_voronoi(points);
+  EXPECT_EQ(dv.triangle_count(), 178);
+  EXPECT_EQ(static_cast<int>(dv.hull.size()), 180);
+  for (int t = 0; t < dv.triangle_count(); ++t) {
+    EXPECT_NEAR(dv.circumcenters[t].x, 0.0, 1e-9 * 5525);
+    EXPECT_NEAR(dv.circumcenters[t].y, 0.0, 1e-9 * 5525);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(is_degenerate_voronoi_edge(dv, t, k), dv.neighbors[t][k] != kInfinite);
+    }
+  }
+}
+
+TEST(VoronoiLayer, HullCellWalkCoversTheWholeFan) {
+  const auto dv = build_delaunay_voronoi(uniform_circle(12));
+  std::vector<int> cell;
+  int total = 0;
+  for (int s : dv.hull) {
+    voronoi_cell(dv, s, cell);
+    // The chain starts on the clockwise hull edge and ends on the counter-clockwise one.
+    const int first = cell.front(), last = cell.back();
+    EXPECT_EQ(dv.neighbors[first][(corner_of(dv, first, s) + 2) % 3], kInfinite);
+    EXPECT_EQ(dv.neighbors[last][(corner_of(dv, last, s) + 1) % 3], kInfinite);
+    total += static_cast<int>(cell.size());
+  }
+  EXPECT_EQ(total, 3 * dv.triangle_count());
+}
+
+TEST(VoronoiLayer, DuplicatesMapToTheirFirstOccurrence) {
+  const std::vector<Point2> points{{0, 0}, {1, 0}, {0, 0}, {0, 1}, {1, 0}, {1, 1}};
+  const auto dv = build_delaunay_voronoi(points);
+  EXPECT_EQ(dv.site_count(), 4);
+  EXPECT_EQ(dv.input_of_site, (std::vector<int>{0, 1, 3, 5}));
+  EXPECT_EQ(dv.site_of_input, (std::vector<int>{0, 1, 0, 2, 1, 3}));
+  EXPECT_EQ(dv.triangle_count(), 2);
+  for (int s = 0; s < 4; ++s) EXPECT_EQ(dv.sites[s], points[dv.input_of_site[s]]);
+}
+
+TEST(VoronoiLayer, LowDimensionalInputHasNoTriangles) {
+  EXPECT_EQ(build_delaunay_voronoi(std::vector<Point2>{}).dimension, -1);
+  EXPECT_EQ(build_delaunay_voronoi(std::vector<Point2>{{1, 1}, {1, 1}}).dimension, 0);
+  const auto line = build_delaunay_voronoi(std::vector<Point2>{{0, 0}, {1, 1}, {2, 2}, {5, 5}});
+  EXPECT_EQ(line.dimension, 1);
+  EXPECT_EQ(line.triangle_count(), 0);
+}
+
+TEST(VoronoiLayer, TangentLineSideIsExactIncludingTies) {
+  // p = (0,0). Triangle {p, (1,1), (-1,1)} has circumcentre (0,1); triangle {p, (2,0), (1,1)}
+  // has circumcentre (1,0), exactly on the line through p orthogonal to (0,1).
+  const std::vector<Point2> points{{0, 0}, {1, 1}, {-1, 1}, {2, 0}};
+  const auto dv = build_delaunay_voronoi(points);
+  ASSERT_EQ(dv.triangle_count(), 2);
+  const int up = std::abs(dv.circumcenters[0].y - 1) < 1e-12 ? 0 : 1;
+  const int right = 1 - up;
+  EXPECT_EQ(side_of_tangent_line(dv, 0, up, right), 0);
+  EXPECT_EQ(side_of_tangent_line(dv, 0, up, up), 1);
+  // Seen from (1,1): (0,1) - (1,1) = (-1,0) and (1,0) - (1,1) = (0,-1) are orthogonal, a tie too.
+  EXPECT_EQ(side_of_tangent_line(dv, 1, up, right), 0);
+}
+
+TEST(VoronoiLayer, ConvexHullMembership) {
+  const auto dv = build_delaunay_voronoi(std::vector<Point2>{{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 1}});
+  EXPECT_TRUE(in_convex_hull(dv, {2, 2}));
+  EXPECT_TRUE(in_convex_hull(dv, {4, 2}));  // on the boundary counts as inside
+  EXPECT_FALSE(in_convex_hull(dv, {4.0000001, 2}));
+  EXPECT_FALSE(in_convex_hull(dv, {-1, -1}));
+}
+
+TEST(NearestSiteIndex, FindsTheNearestPoint) {
+  const std::vector<Point2> points{{0, 0}, {10, 0}, {0, 10}, {7, 7}};
+  const NearestSite index(points);
+  EXPECT_EQ(index.nearest({1, 1}), 0);
+  EXPECT_EQ(index.nearest({9, 1}), 1);
+  EXPECT_EQ(index.nearest({6, 8}), 3);
+  EXPECT_EQ(NearestSite(std::vector<Point2>{}).nearest({0, 0}), -1);
+}
+
+}  // namespace
+}  // namespace curvebench

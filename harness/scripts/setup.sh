@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Installs what is missing and builds curvebench. Sourced by the main job and by the tests.
+#   Debian packages: installed with apt-get when run as root, else the exact command is printed.
+#   Python packages: into .venv from reports/requirements.txt (pinned).
+#   Build: CMake + Ninja into build/ (override with CURVEBENCH_BUILD_DIR).
+set -euo pipefail
+
+CURVEBENCH_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+CURVEBENCH_BUILD_DIR="${CURVEBENCH_BUILD_DIR:-$CURVEBENCH_ROOT/build}"
+CURVEBENCH_VENV="$CURVEBENCH_ROOT/.venv"
+
+curvebench_debian_packages=(g++ cmake ninja-build libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libbenchmark-dev nlohmann-json3-dev libcli11-dev googletest libgtest-dev)
+
+curvebench_install_debian_packages() {
+  local missing=()
+  for package in "$@"; do
+    dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+  done
+  [ ${#missing[@]} -eq 0 ] && return 0
+  if [ "$(id -u)" -eq 0 ]; then
+    echo "setup: installing Debian packages: ${missing[*]}" >&2
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+  else
+    echo "setup: missing Debian packages; run: sudo apt-get install -y ${missing[*]}" >&2
+    exit 1
+  fi
+}
+
+curvebench_python_env() {
+  local requirements="$CURVEBENCH_ROOT/reports/requirements.txt"
+  local stamp="$CURVEBENCH_VENV/.requirements.sha256"
+  local wanted
+  wanted="$(sha256sum "$requirements" | cut -d' ' -f1)"
+  if [ ! -x "$CURVEBENCH_VENV/bin/python" ] || [ "$(cat "$stamp" 2>/dev/null)" != "$wanted" ]; then
+    echo "setup: installing Python packages into $CURVEBENCH_VENV" >&2
+    python3 -m venv "$CURVEBENCH_VENV"
+    "$CURVEBENCH_VENV/bin/pip" install --quiet --disable-pip-version-check -r "$requirements"
+    echo "$wanted" > "$stamp"
+  fi
+}
+
+# curvebench_build [extra cmake arguments...]
+curvebench_build() {
+  cmake -S "$CURVEBENCH_ROOT" -B "$CURVEBENCH_BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+  ninja -C "$CURVEBENCH_BUILD_DIR" >&2
+}
+
+curvebench_install_debian_packages "${curvebench_debian_packages[@]}"
+curvebench_python_env

@@ -44,13 +44,17 @@ void deduplicate(std::span<const Point2> points, DelaunayVoronoi& dv) {
   }
 }
 
-void circumcircle(Point2 a, Point2 b, Point2 c, Point2& center, double& radius) {
+// Circumcentre, circumradius and a bound on the centre's absolute rounding error, with a
+// wide margin: the formula loses about |ab||ac| / |cross(ab, ac)| in relative precision.
+void circumcircle(Point2 a, Point2 b, Point2 c, Point2& center, double& radius, double& error) {
   const Point2 ab = b - a, ac = c - a;
-  const double d = 2.0 * cross(ab, ac);
+  const double area2 = cross(ab, ac);
   const double ab2 = dot(ab, ab), ac2 = dot(ac, ac);
-  const Point2 u{(ac.y * ab2 - ab.y * ac2) / d, (ab.x * ac2 - ac.x * ab2) / d};
+  const Point2 u{(ac.y * ab2 - ab.y * ac2) / (2.0 * area2), (ab.x * ac2 - ac.x * ab2) / (2.0 * area2)};
   center = a + u;
-  radius = norm(u);
+  radius = std::sqrt(dot(u, u));  // not hypot: this runs once per triangle and hypot is slow
+  const double conditioning = std::sqrt(ab2 * ac2) / std::abs(area2);
+  error = 64.0 * std::numeric_limits<double>::epsilon() * (std::abs(a.x) + std::abs(a.y) + radius * (1.0 + conditioning));
 }
 
 void insert_indexed(cgal::Delaunay& dt, std::span<const Point2> points) {
@@ -102,6 +106,7 @@ DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points) {
   dv.neighbors.resize(t);
   dv.circumcenters.resize(t);
   dv.circumradii.resize(t);
+  dv.circumcenter_errors.resize(t);
   std::vector<int> hull_next(sites, -1);
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
     const int id = f->info();
@@ -124,7 +129,8 @@ DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points) {
       dv.site_triangle[from] = id;
       hull_next[from] = to;
     }
-    circumcircle(dv.sites[tri[0]], dv.sites[tri[1]], dv.sites[tri[2]], dv.circumcenters[id], dv.circumradii[id]);
+    circumcircle(dv.sites[tri[0]], dv.sites[tri[1]], dv.sites[tri[2]], dv.circumcenters[id], dv.circumradii[id],
+                 dv.circumcenter_errors[id]);
   }
   const int start = static_cast<int>(std::find(dv.on_hull.begin(), dv.on_hull.end(), 1) - dv.on_hull.begin());
   for (int s = start; s >= 0 && s < sites;) {
@@ -146,7 +152,6 @@ void require_triangulation(const DelaunayVoronoi& dv, const std::string& algorit
 
 std::vector<Edge> to_input_indices(const DelaunayVoronoi& dv, std::vector<Edge> site_edges) {
   for (auto& e : site_edges) e = make_edge(dv.input_of_site[e[0]], dv.input_of_site[e[1]]);
-  std::sort(site_edges.begin(), site_edges.end());
   return site_edges;
 }
 
@@ -175,18 +180,6 @@ bool is_degenerate_voronoi_edge(const DelaunayVoronoi& dv, int triangle, int cor
 
 namespace {
 
-// Bound on the absolute error of the double circumcenter of `triangle`, with a wide margin:
-// the computation loses about |ab||ac|/|cross(ab, ac)| in relative precision.
-double circumcenter_error(const DelaunayVoronoi& dv, int triangle) {
-  const auto& tri = dv.triangles[triangle];
-  const Point2 a = dv.sites[tri[0]];
-  const Point2 ab = dv.sites[tri[1]] - a, ac = dv.sites[tri[2]] - a;
-  const double area2 = std::abs(cross(ab, ac));
-  const double conditioning = norm(ab) * norm(ac) / area2;
-  constexpr double eps = std::numeric_limits<double>::epsilon();
-  return 64.0 * eps * (norm(a) + dv.circumradii[triangle] * (1.0 + conditioning));
-}
-
 int exact_side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source, int query) {
   using Q = CGAL::Exact_rational;
   const Point2 p = dv.sites[site];
@@ -210,13 +203,13 @@ int exact_side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source, 
 
 int side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source_triangle, int query_triangle) {
   const Point2 p = dv.sites[site];
-  const Point2 v = dv.circumcenters[source_triangle] - p;
-  const Point2 u = dv.circumcenters[query_triangle] - p;
-  const double value = dot(u, v);
-  const double eu = circumcenter_error(dv, query_triangle) + 4.0 * std::numeric_limits<double>::epsilon() * norm(p);
-  const double ev = circumcenter_error(dv, source_triangle) + 4.0 * std::numeric_limits<double>::epsilon() * norm(p);
-  const double bound = eu * norm(v) + ev * norm(u) + eu * ev;
-  if (std::isfinite(value) && std::isfinite(bound) && std::abs(value) > bound) return value > 0 ? 1 : -1;
+  const double value = dot(dv.circumcenters[query_triangle] - p, dv.circumcenters[source_triangle] - p);
+  // p lies on both circumcircles, so the two vectors have the circumradii as lengths.
+  const double rounding = 4.0 * std::numeric_limits<double>::epsilon() * (std::abs(p.x) + std::abs(p.y));
+  const double eu = dv.circumcenter_errors[query_triangle] + rounding;
+  const double ev = dv.circumcenter_errors[source_triangle] + rounding;
+  const double bound = eu * dv.circumradii[source_triangle] + ev * dv.circumradii[query_triangle] + eu * ev;
+  if (std::abs(value) > bound && std::isfinite(bound)) return value > 0 ? 1 : -1;
   return exact_side_of_tangent_line(dv, site, source_triangle, query_triangle);
 }
 

@@ -39,6 +39,8 @@ struct DelaunayVoronoi {
   std::vector<std::array<int, 3>> neighbors;  // triangle across the edge opposite each corner
   std::vector<Point2> circumcenters;          // the Voronoi vertex of each triangle
   std::vector<double> circumradii;
+  // Bound on the rounding error of each computed circumcenter (see side_of_tangent_line).
+  std::vector<double> circumcenter_errors;
 
   // One triangle incident to each site. For a hull site it is the first triangle of its fan
   // in counter-clockwise order, so that a walk from it covers the whole unbounded cell.
@@ -60,7 +62,7 @@ int bare_delaunay_vertex_count(std::span<const Point2> points);
 // distinct points, not all collinear): only then is there a closed curve to look for.
 void require_triangulation(const DelaunayVoronoi& dv, const std::string& algorithm);
 
-// Edges between sites as edges between input indices (first occurrences), sorted.
+// Edges between sites as edges between input indices (first occurrences), in the same order.
 std::vector<Edge> to_input_indices(const DelaunayVoronoi& dv, std::vector<Edge> site_edges);
 
 // Corner (0, 1 or 2) of `site` in `triangle`.

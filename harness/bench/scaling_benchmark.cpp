@@ -1,11 +1,15 @@
 // Scaling suite: every algorithm against the bare CGAL Delaunay construction of the same
 // points, side by side in one run. Each algorithm's row carries its time as a ratio to the
 // Delaunay time measured for the same n in this run (counter "x_delaunay"), its time per
-// point, and the process's peak resident memory so far.
+// point, the time per point of its phases after its own "delaunay" phase
+// ("after_delaunay_ns_per_point", from Reconstruction::timing_ms), and the process's peak
+// resident memory so far. Times are the thread's CPU time, so that other work on the machine
+// does not enter the ratios; the code timed is single-threaded.
 //
 // Run: curvebench_benchmark [--benchmark_format=json] [--benchmark_filter=...]
 #include <benchmark/benchmark.h>
 #include <sys/resource.h>
+#include <time.h>
 
 #include <algorithm>
 #include <cmath>
@@ -49,6 +53,12 @@ std::map<int, double>& delaunay_seconds() {  // mean Delaunay time per n, from t
   return seconds;
 }
 
+double thread_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
+
 double peak_memory_mib() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -68,9 +78,9 @@ void BM_Delaunay(benchmark::State& state) {
   const auto& points = cached_points(n);
   double total = 0.0;
   for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
+    const double start = thread_cpu_seconds();
     benchmark::DoNotOptimize(bare_delaunay_vertex_count(points));
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = thread_cpu_seconds() - start;
     state.SetIterationTime(seconds);
     total += seconds;
   }
@@ -82,16 +92,19 @@ void BM_Algorithm(benchmark::State& state, const Algorithm* algorithm) {
   const int n = static_cast<int>(state.range(0));
   const auto& points = cached_points(n);
   const Parameters params = resolve_parameters(algorithm->parameters(), {}, algorithm->name());
-  double total = 0.0;
+  double total = 0.0, after_delaunay_ms = 0.0;
   for (auto _ : state) {
-    const auto start = std::chrono::steady_clock::now();
+    const double start = thread_cpu_seconds();
     auto result = algorithm->reconstruct(points, params);
     benchmark::DoNotOptimize(result);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = thread_cpu_seconds() - start;
     state.SetIterationTime(seconds);
     total += seconds;
+    const auto& phases = result.timing_ms;
+    if (phases.size() >= 2 && phases.front().first == "delaunay") after_delaunay_ms += phases.back().second - phases.front().second;
   }
   report(state, n, total);
+  if (after_delaunay_ms > 0) state.counters["after_delaunay_ns_per_point"] = 1e6 * after_delaunay_ms / static_cast<double>(state.iterations()) / n;
 }
 
 void apply_sizes(benchmark::internal::Benchmark* b) {

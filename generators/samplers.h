@@ -13,6 +13,7 @@ struct SampledScene {
   std::vector<Point2> points;
   std::vector<int> curve;          // curve index of each point, -1 for an outlier
   std::vector<double> parameter;   // arc-length fraction in [0, 1) along its curve, NaN for an outlier
+  std::vector<double> lfs;         // local feature size of the curve where the sample was drawn, NaN for an outlier
   std::vector<Edge> true_edges;    // consecutive samples along each curve (the correct reconstruction)
 };
 

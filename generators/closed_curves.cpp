@@ -1,0 +1,125 @@
+#include "generators/closed_curves.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "generators/polylines_are_simple.h"
+#include "generators/random.h"
+#include "generators/scene_builder.h"
+
+namespace curvebench {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+void require(bool condition, const std::string& message) {
+  if (!condition) throw std::invalid_argument(message);
+}
+
+// r(t) = 1 + sum over k = 2..6 of (a_k cos kt + b_k sin kt), coefficients uniform in
+// +-0.25/k: smooth, often with concavities, always star-shaped about the origin.
+struct FourierRadius {
+  static constexpr int kFirst = 2, kLast = 6;
+  std::array<double, kLast + 1> cosine{}, sine{};
+
+  double operator()(double t) const {
+    double r = 1.0;
+    for (int k = kFirst; k <= kLast; ++k) r += cosine[k] * std::cos(k * t) + sine[k] * std::sin(k * t);
+    return r;
+  }
+};
+
+// The random curve of `seed`: coefficients redrawn until the radius stays clear of zero
+// (r > 0.2, so no pinch) and the dense polyline is simple.
+std::vector<Point2> random_fourier_polyline(std::uint64_t seed, int dense) {
+  Random random(seed);
+  for (;;) {
+    FourierRadius radius;
+    for (int k = FourierRadius::kFirst; k <= FourierRadius::kLast; ++k) {
+      radius.cosine[k] = random.uniform(-0.25, 0.25) / k;
+      radius.sine[k] = random.uniform(-0.25, 0.25) / k;
+    }
+    auto polyline = closed_parametric_polyline(
+        [&](double t) { return radius(t) * Point2{std::cos(t), std::sin(t)}; }, dense);
+    const bool clear_of_zero = std::all_of(polyline.begin(), polyline.end(), [](Point2 p) { return norm(p) > 0.2; });
+    if (clear_of_zero && find_polyline_crossing({polyline}).empty()) return polyline;
+  }
+}
+
+}  // namespace
+
+Scene circle_scene(double radius, int dense) {
+  require(radius > 0 && std::isfinite(radius), "circle: radius must be a positive number");
+  require(dense >= 3, "circle: dense must be at least 3");
+  std::vector<Point2> points(dense);
+  for (int i = 0; i < dense; ++i) points[i] = radius * Point2{std::cos(kTwoPi * i / dense), std::sin(kTwoPi * i / dense)};
+  return make_scene("circle", {std::move(points)}, [radius](Point2) { return radius; });
+}
+
+Scene ellipse_scene(double a, double b, int dense) {
+  require(a > 0 && b > 0 && std::isfinite(a) && std::isfinite(b), "ellipse: semi-axes must be positive numbers");
+  auto points = closed_parametric_polyline([a, b](double t) { return Point2{a * std::cos(t), b * std::sin(t)}; }, dense);
+  // The medial axis of an ellipse is the segment between the centres of curvature at the
+  // ends of the major axis; lfs is the distance to that segment (outside it is empty).
+  const double half_axis = a >= b ? (a * a - b * b) / a : (b * b - a * a) / b;
+  auto exact_lfs = [a, b, half_axis](Point2 p) {
+    return a >= b ? std::hypot(p.x - std::clamp(p.x, -half_axis, half_axis), p.y)
+                  : std::hypot(p.x, p.y - std::clamp(p.y, -half_axis, half_axis));
+  };
+  return make_scene("ellipse", {std::move(points)}, exact_lfs);
+}
+
+Scene rose_scene(double a, double b, int k, int dense) {
+  require(std::isfinite(a) && std::isfinite(b) && a > std::abs(b), "rose: need a > |b| so that r = a + b cos(k t) > 0");
+  require(k >= 1, "rose: k must be at least 1");
+  auto points = closed_parametric_polyline(
+      [a, b, k](double t) { return (a + b * std::cos(k * t)) * Point2{std::cos(t), std::sin(t)}; }, dense);
+  return make_scene("rose", {std::move(points)});
+}
+
+Scene random_fourier_scene(std::uint64_t seed, int dense) {
+  require(dense >= 3, "random curve: dense must be at least 3");
+  return make_scene("random_fourier", {random_fourier_polyline(seed, dense)});
+}
+
+Scene disjoint_curves_scene(int count, std::uint64_t seed, int dense) {
+  require(count >= 1 && count <= 16, "disjoint curves: count must be between 1 and 16");
+  require(dense >= 3, "disjoint curves: dense must be at least 3");
+  Random random(seed);
+  std::vector<std::vector<Point2>> curves;
+  std::vector<Point2> centers;
+  std::vector<double> reaches;  // radius of a disc around the centre holding the curve
+  double half_width = 1.5 * std::sqrt(static_cast<double>(count));
+  for (int c = 0; c < count; ++c) {
+    auto curve = random_fourier_polyline(derive_seed(seed, c), dense);
+    const double scale = random.uniform(0.4, 1.0);
+    const double angle = random.uniform(0.0, kTwoPi);
+    double reach = 0.0;
+    for (Point2& p : curve) {
+      p = scale * Point2{p.x * std::cos(angle) - p.y * std::sin(angle), p.x * std::sin(angle) + p.y * std::cos(angle)};
+      reach = std::max(reach, norm(p));
+    }
+    // Random centres, rejected while the discs come closer than a gap; the box grows when
+    // it is crowded, so placement always ends.
+    for (int attempt = 1;; ++attempt) {
+      const Point2 center{random.uniform(-half_width, half_width), random.uniform(-half_width, half_width)};
+      bool clear = true;
+      for (size_t j = 0; j < centers.size() && clear; ++j) clear = distance(center, centers[j]) > reach + reaches[j] + 0.1;
+      if (clear) {
+        for (Point2& p : curve) p = p + center;
+        centers.push_back(center);
+        reaches.push_back(reach);
+        break;
+      }
+      if (attempt % 100 == 0) half_width *= 1.2;
+    }
+    curves.push_back(std::move(curve));
+  }
+  return make_scene("disjoint_curves", std::move(curves));
+}
+
+}  // namespace curvebench

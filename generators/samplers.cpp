@@ -1,0 +1,170 @@
+#include "generators/samplers.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "generators/random.h"
+#include "generators/nearest_point_tree.h"
+
+namespace curvebench {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Arc-length access to one dense curve. Positions u are arc lengths from vertex 0 and may
+// run past one full turn (up to two), so that a walk starting anywhere never wraps.
+class ArcLength {
+ public:
+  explicit ArcLength(const DenseCurve& curve) : curve_(curve), start_(curve.points.size() + 1, 0.0) {
+    const size_t n = curve.points.size();
+    for (size_t i = 0; i < n; ++i) start_[i + 1] = start_[i] + distance(curve.points[i], curve.points[(i + 1) % n]);
+  }
+
+  double total() const { return start_.back(); }
+  int vertex_count() const { return static_cast<int>(curve_.points.size()); }
+  // Unrolled vertex j (vertex j mod n, in turn j / n) and its position.
+  Point2 vertex(int j) const { return curve_.points[j % vertex_count()]; }
+  double vertex_lfs(int j) const { return curve_.lfs[j % vertex_count()]; }
+  double vertex_position(int j) const { return start_[j % vertex_count()] + (j / vertex_count()) * total(); }
+  // The first unrolled vertex strictly after position u.
+  int vertex_after(double u) const {
+    const double turns = std::floor(u / total());
+    const int j = static_cast<int>(std::upper_bound(start_.begin(), start_.end() - 1, u - turns * total()) - start_.begin());
+    return j + static_cast<int>(turns) * vertex_count();
+  }
+
+  Point2 point_at(double u) const {
+    const auto [i, f] = locate(u);
+    return curve_.points[i] + f * (curve_.points[(i + 1) % vertex_count()] - curve_.points[i]);
+  }
+  double lfs_at(double u) const {
+    const auto [i, f] = locate(u);
+    return curve_.lfs[i] + f * (curve_.lfs[(i + 1) % vertex_count()] - curve_.lfs[i]);
+  }
+  double fraction_of_turn(double u) const {
+    const double f = std::fmod(u, total()) / total();
+    return f < 1.0 ? f : 0.0;
+  }
+
+ private:
+  std::pair<int, double> locate(double u) const {
+    u = std::fmod(u, total());
+    const int i = std::clamp(static_cast<int>(std::upper_bound(start_.begin(), start_.end(), u) - start_.begin()) - 1, 0,
+                             vertex_count() - 1);
+    const double length = start_[i + 1] - start_[i];
+    return {i, length > 0 ? std::clamp((u - start_[i]) / length, 0.0, 1.0) : 0.0};
+  }
+
+  const DenseCurve& curve_;
+  std::vector<double> start_;  // arc length at each vertex; start_[n] is the total length
+};
+
+// Epsilon-sampling of one curve by a forward walk; returns the sample positions in order.
+class EpsilonWalk {
+ public:
+  EpsilonWalk(const ArcLength& arc, double epsilon) : arc_(arc), epsilon_(epsilon) {}
+
+  // True if every vertex strictly between positions a < b is within epsilon*lfs of the
+  // samples at a or b.
+  bool covered_between(double a, double b) const {
+    const Point2 pa = arc_.point_at(a), pb = arc_.point_at(b);
+    for (int j = arc_.vertex_after(a); arc_.vertex_position(j) < b; ++j) {
+      const double reach = epsilon_ * arc_.vertex_lfs(j);
+      if (distance(arc_.vertex(j), pa) > reach && distance(arc_.vertex(j), pb) > reach) return false;
+    }
+    return true;
+  }
+
+  // The largest b in (a, limit] such that the samples at a and b cover every vertex between
+  // them: candidates advance vertex by vertex, keeping the vertices that a does not cover,
+  // and the first failing candidate is bisected against the last good one. A step always
+  // reaches at least the next vertex (nothing lies strictly between).
+  double largest_step_end(double a, double limit) {
+    const Point2 pa = arc_.point_at(a);
+    not_covered_by_a_.clear();
+    double good = a;
+    for (int j = arc_.vertex_after(a);; ++j) {
+      const double candidate = std::min(arc_.vertex_position(j), limit);
+      if (!covers_rest(arc_.point_at(candidate))) {
+        double bad = candidate;
+        for (int iteration = 0; iteration < 50; ++iteration) {
+          const double middle = 0.5 * (good + bad);
+          (covers_rest(arc_.point_at(middle)) ? good : bad) = middle;
+        }
+        return good;
+      }
+      if (candidate >= limit) return limit;
+      good = candidate;
+      if (distance(arc_.vertex(j), pa) > epsilon_ * arc_.vertex_lfs(j)) not_covered_by_a_.push_back(j);
+    }
+  }
+
+ private:
+  bool covers_rest(Point2 b) const {
+    return std::all_of(not_covered_by_a_.begin(), not_covered_by_a_.end(),
+                       [&](int j) { return distance(arc_.vertex(j), b) <= epsilon_ * arc_.vertex_lfs(j); });
+  }
+
+  const ArcLength& arc_;
+  double epsilon_;
+  std::vector<int> not_covered_by_a_;
+};
+
+}  // namespace
+
+SampledScene epsilon_sample(const Scene& scene, double epsilon, std::uint64_t seed, double min_step_fraction) {
+  if (!(epsilon > 0) || !std::isfinite(epsilon)) throw std::invalid_argument("epsilon must be a positive number");
+  if (!(min_step_fraction > 0 && min_step_fraction <= 1)) throw std::invalid_argument("min_step_fraction must be in (0, 1]");
+  Random random(seed);
+  SampledScene out;
+  for (int c = 0; c < static_cast<int>(scene.curves.size()); ++c) {
+    const ArcLength arc(scene.curves[c]);
+    EpsilonWalk walk(arc, epsilon);
+    const double start = arc.total() * random.uniform();
+    const double end = start + arc.total();
+    std::vector<double> positions{start};
+    // Steps are capped at a third of the curve so that every curve gets at least three
+    // samples (a closed curve to reconstruct), however large epsilon is.
+    for (double a = start;;) {
+      const double largest = walk.largest_step_end(a, std::min(a + arc.total() / 3, end));
+      if (largest >= end) break;
+      double b = a + random.uniform(min_step_fraction, 1.0) * (largest - a);
+      // Coverage is not monotone in b on a curved arc; fall back to the largest step.
+      if (!walk.covered_between(a, b)) b = largest;
+      positions.push_back(b);
+      a = b;
+    }
+    const int first = static_cast<int>(out.points.size());
+    const int count = static_cast<int>(positions.size());
+    for (const double u : positions) {
+      out.points.push_back(arc.point_at(u));
+      out.curve.push_back(c);
+      out.parameter.push_back(arc.fraction_of_turn(u));
+      out.lfs.push_back(arc.lfs_at(u));
+    }
+    for (int i = 0; i < count; ++i) out.true_edges.push_back(make_edge(first + i, first + (i + 1) % count));
+  }
+  std::sort(out.true_edges.begin(), out.true_edges.end());
+  return out;
+}
+
+double achieved_epsilon(const Scene& scene, const SampledScene& samples) {
+  std::vector<Point2> on_curves;
+  for (size_t i = 0; i < samples.points.size(); ++i) {
+    if (samples.curve[i] >= 0) on_curves.push_back(samples.points[i]);
+  }
+  if (on_curves.empty()) return std::numeric_limits<double>::infinity();
+  const NearestPointTree nearest(on_curves);
+  double worst = 0.0;
+  for (const auto& curve : scene.curves) {
+    for (size_t i = 0; i < curve.points.size(); ++i) {
+      const Point2 x = curve.points[i];
+      worst = std::max(worst, distance(x, on_curves[nearest.nearest(x)]) / curve.lfs[i]);
+    }
+  }
+  return worst;
+}
+
+}  // namespace curvebench

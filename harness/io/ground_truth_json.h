@@ -1,0 +1,63 @@
+// The ground-truth JSON of DESIGN.md ("File formats"): what `curvebench generate --truth`
+// writes beside the points file and `curvebench evaluate` reads.
+//
+// {"format": "curvebench-ground-truth/1",
+//  "generator": {"family": "rose", "epsilon": 0.2, "seed": 3, ...every setting},
+//  "points": N,                                   // samples in the points file, file order
+//  "curves": [{"vertices": [[x, y], ...], "lfs": [...]}],   // dense closed counter-clockwise polylines
+//  "samples": [{"curve": 0, "parameter": 0.25, "lfs": 0.1}, {"curve": "outlier"}, ...],
+//  "edges": [[i, j], ...],                        // correct adjacency between samples, i < j, sorted
+//  "medial_axis": {"vertices": [[x, y], ...], "edges": [[a, b], ...]},  // true interior medial axis
+//  "dominant_points": [[x, y], ...]}              // corners and curvature extrema on the curves
+//
+// "parameter" is the arc-length fraction in [0, 1) along the curve's dense polyline from its
+// first vertex; "lfs" the local feature size there (before any noise moved the sample).
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "core/point.h"
+
+namespace curvebench {
+
+inline constexpr const char* kGroundTruthFormat = "curvebench-ground-truth/1";
+
+struct GroundTruthCurve {
+  std::vector<Point2> vertices;  // closed implicitly
+  std::vector<double> lfs;       // one per vertex
+};
+
+struct GroundTruthSample {
+  int curve = -1;  // index into curves, -1 for an outlier
+  double parameter = std::numeric_limits<double>::quiet_NaN();
+  double lfs = std::numeric_limits<double>::quiet_NaN();
+  bool is_outlier() const { return curve < 0; }
+};
+
+struct GroundTruthMedialAxis {
+  std::vector<Point2> vertices;
+  std::vector<Edge> edges;
+};
+
+struct GroundTruth {
+  nlohmann::ordered_json generator = nlohmann::ordered_json::object();  // settings, incl. "seed"
+  std::vector<GroundTruthCurve> curves;
+  std::vector<GroundTruthSample> samples;  // one per point of the points file
+  std::vector<Edge> edges;
+  GroundTruthMedialAxis medial_axis;
+  std::vector<Point2> dominant_points;
+};
+
+nlohmann::ordered_json ground_truth_to_json(const GroundTruth& truth);
+
+// Parses and checks a ground-truth JSON (format tag, sample count, indices in range);
+// throws std::runtime_error "<name>: <what>" if it is malformed.
+GroundTruth ground_truth_from_json(const nlohmann::ordered_json& json, const std::string& name);
+
+// Reads and parses a ground-truth file; errors name the path.
+GroundTruth read_ground_truth_file(const std::string& path);
+
+}  // namespace curvebench

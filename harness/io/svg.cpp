@@ -42,9 +42,12 @@ std::string reconstruction_svg(std::span<const Point2> points, const Reconstruct
   const double margin = 0.05 * size;
   const double canvas = 800.0;
   const double scale = canvas / (size + 2 * margin);
-  const double width = (max_x - min_x + 2 * margin) * scale, height = (max_y - min_y + 2 * margin) * scale;
+  const int legend_rows = 1 + (result.curve_edges ? 1 : 0) + (result.medial_axis ? 1 : 0) + (result.dominant_points ? 1 : 0);
+  const double legend_height = 16.0 * legend_rows + 8.0;  // a band above the drawing
+  const double width = (max_x - min_x + 2 * margin) * scale;
+  const double height = (max_y - min_y + 2 * margin) * scale + legend_height;
   auto X = [&](Point2 p) { return (p.x - min_x + margin) * scale; };
-  auto Y = [&](Point2 p) { return (max_y - p.y + margin) * scale; };  // y up
+  auto Y = [&](Point2 p) { return legend_height + (max_y - p.y + margin) * scale; };  // y up
   const double point_radius = std::clamp(300.0 / std::max<double>(1.0, static_cast<double>(points.size())), 0.6, 3.0);
 
   std::string svg;
@@ -75,6 +78,17 @@ std::string reconstruction_svg(std::span<const Point2> points, const Reconstruct
     }
     svg += "</g>\n";
   }
+  // Legend: one line per layer present, in the band at the top.
+  double legend_y = 16;
+  auto legend = [&](const char* swatch, const char* label) {
+    append(svg, "<g transform=\"translate(8 %.0f)\">%s<text x=\"22\" y=\"4\" font-family=\"sans-serif\" font-size=\"12\">%s</text></g>\n",
+           legend_y, swatch, label);
+    legend_y += 16;
+  };
+  legend("<circle cx=\"8\" cy=\"0\" r=\"2.5\" fill=\"#777\"/>", "input points");
+  if (result.curve_edges) legend("<line x1=\"0\" y1=\"0\" x2=\"16\" y2=\"0\" stroke=\"black\" stroke-width=\"1.5\"/>", "curve");
+  if (result.medial_axis) legend("<line x1=\"0\" y1=\"0\" x2=\"16\" y2=\"0\" stroke=\"#1f77b4\"/>", "interior medial axis");
+  if (result.dominant_points) legend("<circle cx=\"8\" cy=\"0\" r=\"5\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"2\"/>", "dominant points");
   svg += "</svg>\n";
   return svg;
 }

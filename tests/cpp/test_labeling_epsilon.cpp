@@ -66,5 +66,19 @@ TEST(LabelingEpsilonCircle, UniformCircleOfEveryEpsilon) {
   }
 }
 
+TEST(LabelingEpsilonInvariance, SameEdgesAndDominantPointsAfterScalingOrTranslation) {
+  const SampledScene samples = epsilon_sample(rose_scene(1.0, 0.3, 5), 0.2, 9);
+  const Algorithm& labeling = find_algorithm("labeling");
+  const auto reference = labeling.reconstruct(samples.points, {});
+  for (auto transform : {+[](Point2 p) { return 1e9 * p; }, +[](Point2 p) { return 1e-9 * p; },
+                         +[](Point2 p) { return p + Point2{1e6, -1e6}; }}) {
+    std::vector<Point2> moved;
+    for (const auto& p : samples.points) moved.push_back(transform(p));
+    const auto result = labeling.reconstruct(moved, {});
+    EXPECT_EQ(testing::sorted(*result.curve_edges), testing::sorted(*reference.curve_edges));
+    EXPECT_EQ(*result.dominant_points, *reference.dominant_points);
+  }
+}
+
 }  // namespace
 }  // namespace curvebench

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -33,9 +34,13 @@ struct FourierRadius {
   }
 };
 
-// The random curve of `seed`: coefficients redrawn until the radius stays clear of zero
+std::vector<Point2> polar_polyline(const std::function<double(double)>& radius, int dense) {
+  return closed_parametric_polyline([&](double t) { return radius(t) * Point2{std::cos(t), std::sin(t)}; }, dense);
+}
+
+// The random radius of `seed`: coefficients redrawn until the radius stays clear of zero
 // (r > 0.2, so no pinch) and the dense polyline is simple.
-std::vector<Point2> random_fourier_polyline(std::uint64_t seed, int dense) {
+FourierRadius random_fourier_radius(std::uint64_t seed, int dense) {
   Random random(seed);
   for (;;) {
     FourierRadius radius;
@@ -43,11 +48,14 @@ std::vector<Point2> random_fourier_polyline(std::uint64_t seed, int dense) {
       radius.cosine[k] = random.uniform(-0.25, 0.25) / k;
       radius.sine[k] = random.uniform(-0.25, 0.25) / k;
     }
-    auto polyline = closed_parametric_polyline(
-        [&](double t) { return radius(t) * Point2{std::cos(t), std::sin(t)}; }, dense);
+    const auto polyline = polar_polyline(radius, dense);
     const bool clear_of_zero = std::all_of(polyline.begin(), polyline.end(), [](Point2 p) { return norm(p) > 0.2; });
-    if (clear_of_zero && find_polyline_crossing({polyline}).empty()) return polyline;
+    if (clear_of_zero && find_polyline_crossing({polyline}).empty()) return radius;
   }
+}
+
+std::vector<Point2> random_fourier_polyline(std::uint64_t seed, int dense) {
+  return polar_polyline(random_fourier_radius(seed, dense), dense);
 }
 
 }  // namespace
@@ -57,7 +65,7 @@ Scene circle_scene(double radius, int dense) {
   require(dense >= 3, "circle: dense must be at least 3");
   std::vector<Point2> points(dense);
   for (int i = 0; i < dense; ++i) points[i] = radius * Point2{std::cos(kTwoPi * i / dense), std::sin(kTwoPi * i / dense)};
-  return make_scene("circle", {std::move(points)}, [radius](Point2) { return radius; });
+  return make_scene("circle", {smooth_curve(std::move(points))}, [radius](Point2) { return radius; });
 }
 
 Scene ellipse_scene(double a, double b, int dense) {
@@ -70,27 +78,26 @@ Scene ellipse_scene(double a, double b, int dense) {
     return a >= b ? std::hypot(p.x - std::clamp(p.x, -half_axis, half_axis), p.y)
                   : std::hypot(p.x, p.y - std::clamp(p.y, -half_axis, half_axis));
   };
-  return make_scene("ellipse", {std::move(points)}, exact_lfs);
+  return make_scene("ellipse", {smooth_curve(std::move(points))}, exact_lfs);
 }
 
 Scene rose_scene(double a, double b, int k, int dense) {
   require(std::isfinite(a) && std::isfinite(b) && a > std::abs(b), "rose: need a > |b| so that r = a + b cos(k t) > 0");
   require(k >= 1, "rose: k must be at least 1");
-  auto points = closed_parametric_polyline(
-      [a, b, k](double t) { return (a + b * std::cos(k * t)) * Point2{std::cos(t), std::sin(t)}; }, dense);
-  return make_scene("rose", {std::move(points)});
+  auto points = polar_polyline([a, b, k](double t) { return a + b * std::cos(k * t); }, dense);
+  return make_scene("rose", {smooth_curve(std::move(points))});
 }
 
 Scene random_fourier_scene(std::uint64_t seed, int dense) {
   require(dense >= 3, "random curve: dense must be at least 3");
-  return make_scene("random_fourier", {random_fourier_polyline(seed, dense)});
+  return make_scene("random_fourier", {smooth_curve(random_fourier_polyline(seed, dense))});
 }
 
 Scene disjoint_curves_scene(int count, std::uint64_t seed, int dense) {
   require(count >= 1 && count <= 16, "disjoint curves: count must be between 1 and 16");
   require(dense >= 3, "disjoint curves: dense must be at least 3");
   Random random(seed);
-  std::vector<std::vector<Point2>> curves;
+  std::vector<DenseCurve> curves;
   std::vector<Point2> centers;
   std::vector<double> reaches;  // radius of a disc around the centre holding the curve
   double half_width = 1.5 * std::sqrt(static_cast<double>(count));
@@ -117,9 +124,65 @@ Scene disjoint_curves_scene(int count, std::uint64_t seed, int dense) {
       }
       if (attempt % 100 == 0) half_width *= 1.2;
     }
-    curves.push_back(std::move(curve));
+    curves.push_back(smooth_curve(std::move(curve)));
   }
   return make_scene("disjoint_curves", std::move(curves));
+}
+
+Scene superellipse_scene(double a, double b, double exponent, int dense) {
+  require(a > 0 && b > 0 && std::isfinite(a) && std::isfinite(b), "superellipse: semi-axes must be positive numbers");
+  require(exponent >= 1 && std::isfinite(exponent), "superellipse: exponent must be at least 1");
+  auto signed_power = [exponent](double v) { return std::copysign(std::pow(std::abs(v), 2.0 / exponent), v); };
+  auto points = closed_parametric_polyline(
+      [=](double t) { return Point2{a * signed_power(std::cos(t)), b * signed_power(std::sin(t))}; }, dense);
+  return make_scene("superellipse", {smooth_curve(std::move(points))});
+}
+
+Scene dumbbell_scene(double neck_half_width, int dense) {
+  require(neck_half_width > 0 && neck_half_width <= 1, "dumbbell: neck half-width must be in (0, 1]");
+  // Cassini oval with foci (+-1, 0): (x^2 + y^2)^2 - 2 (x^2 - y^2) = a^4 - 1. Its half-width
+  // at x = 0 is sqrt(a^2 - 1); in polar form r^2 = cos 2t + sqrt(cos^2 2t + a^4 - 1).
+  const double a2 = 1.0 + neck_half_width * neck_half_width;
+  auto points = polar_polyline(
+      [a2](double t) {
+        const double c = std::cos(2 * t);
+        return std::sqrt(c + std::sqrt(c * c + a2 * a2 - 1.0));
+      },
+      dense);
+  return make_scene("dumbbell", {smooth_curve(std::move(points))});
+}
+
+Scene concavities_scene(int count, double depth, double width, int dense) {
+  require(count >= 1 && count <= 64, "concavities: count must be between 1 and 64");
+  require(depth > 0 && depth <= 0.9, "concavities: depth must be in (0, 0.9]");
+  require(width > 0 && width * count < kTwoPi, "concavities: width must be positive and the slots must fit");
+  // Slots at equally spaced angles; each bump is a Gaussian in the angular distance to it.
+  auto radius = [=](double t) {
+    double bumps = 0.0;
+    for (int i = 0; i < count; ++i) {
+      double delta = std::remainder(t - kTwoPi * (i + 0.5) / count, kTwoPi);
+      bumps += std::exp(-0.5 * (delta / width) * (delta / width));
+    }
+    return 1.0 - depth * std::min(bumps, 1.0);
+  };
+  // Slots are narrow: oversample so that their bottoms get enough vertices.
+  return make_scene("concavities", {smooth_curve(polar_polyline(radius, dense))});
+}
+
+Scene nested_curves_scene(std::uint64_t seed, int dense) {
+  require(dense >= 3, "nested curves: dense must be at least 3");
+  // Both curves are star-shaped about the origin, so the inner one lies inside the outer one
+  // when its largest radius is below the outer's smallest; half of it leaves a wide gap.
+  const FourierRadius outer = random_fourier_radius(derive_seed(seed, 0), dense);
+  const FourierRadius inner = random_fourier_radius(derive_seed(seed, 1), dense);
+  auto outer_points = polar_polyline(outer, dense);
+  auto inner_points = polar_polyline(inner, dense);
+  double outer_min = HUGE_VAL, inner_max = 0.0;
+  for (const Point2 p : outer_points) outer_min = std::min(outer_min, norm(p));
+  for (const Point2 p : inner_points) inner_max = std::max(inner_max, norm(p));
+  const double scale = 0.5 * outer_min / inner_max;
+  for (Point2& p : inner_points) p = scale * p;
+  return make_scene("nested_curves", {smooth_curve(std::move(outer_points)), smooth_curve(std::move(inner_points))});
 }
 
 }  // namespace curvebench

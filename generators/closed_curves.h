@@ -18,6 +18,7 @@ namespace curvebench {
 struct DenseCurve {
   std::vector<Point2> points;  // counter-clockwise, closed implicitly
   std::vector<double> lfs;     // local feature size at each dense point
+  std::vector<int> corners;    // dense indices of sharp corners (piecewise-smooth curves), increasing
 };
 
 struct Scene {
@@ -32,5 +33,27 @@ Scene ellipse_scene(double a, double b, int dense = 8192);
 Scene rose_scene(double a, double b, int k, int dense = 8192);             // r = a + b cos(k t)
 Scene random_fourier_scene(std::uint64_t seed, int dense = 8192);          // r(t) = 1 + random harmonics, checked simple
 Scene disjoint_curves_scene(int count, std::uint64_t seed, int dense = 4096);  // 2-5 disjoint random curves
+
+// Smooth families.
+Scene superellipse_scene(double a, double b, double exponent, int dense = 8192);  // |x/a|^e + |y/b|^e = 1; e > 2 rounds a square
+Scene dumbbell_scene(double neck_half_width, int dense = 8192);  // Cassini oval: two lobes, neck of the given half-width
+// `count` narrow slots cut towards the centre of the unit circle: r(t) = 1 - depth * (sum of
+// Gaussian bumps of angular width `width`), depth in (0, 0.9].
+Scene concavities_scene(int count, double depth, double width, int dense = 8192);
+// A random Fourier curve with a smaller random Fourier curve nested inside it.
+Scene nested_curves_scene(std::uint64_t seed, int dense = 4096);
+
+// Piecewise-smooth families with sharp corners (DenseCurve::corners records them).
+Scene star_scene(int points, double inner_ratio, int dense = 8192);  // star polygon, inner radius = ratio * outer
+Scene square_scene(double side, int dense = 4096);
+Scene l_shape_scene(double arm_width, int dense = 8192);  // L inside the 2x2 square, arms of the given width
+// A crescent: the unit disc minus a disc of radius `inner_radius` centred at (offset, 0); two
+// horn tips where the arcs meet.
+Scene horned_scene(double inner_radius, double offset, int dense = 8192);
+
+// Closed polygons (imported outlines): each ring densified to about `dense` vertices in all,
+// every input vertex where the boundary turns kept as a corner. Throws std::invalid_argument
+// if a ring has fewer than 3 distinct vertices or the rings are not simple and disjoint.
+Scene polygon_scene(std::string name, const std::vector<std::vector<Point2>>& rings, int dense = 8192);
 
 }  // namespace curvebench

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "generators/random.h"
 #include "generators/nearest_point_tree.h"
@@ -42,6 +43,12 @@ class ArcLength {
   double lfs_at(double u) const {
     const auto [i, f] = locate(u);
     return curve_.lfs[i] + f * (curve_.lfs[(i + 1) % vertex_count()] - curve_.lfs[i]);
+  }
+  // Outward unit normal of the polyline edge at u (the curve is counter-clockwise).
+  Point2 normal_at(double u) const {
+    const int i = locate(u).first;
+    const Point2 d = curve_.points[(i + 1) % vertex_count()] - curve_.points[i];
+    return (1.0 / norm(d)) * Point2{d.y, -d.x};
   }
   double fraction_of_turn(double u) const {
     const double f = std::fmod(u, total()) / total();
@@ -112,6 +119,34 @@ class EpsilonWalk {
   std::vector<int> not_covered_by_a_;
 };
 
+// Appends samples of curve c at arc positions in walking order, and the cycle through them.
+void append_curve_samples(SampledScene& out, const ArcLength& arc, int c, const std::vector<double>& positions) {
+  const int first = static_cast<int>(out.points.size());
+  const int count = static_cast<int>(positions.size());
+  for (const double u : positions) {
+    out.points.push_back(arc.point_at(u));
+    out.curve.push_back(c);
+    out.parameter.push_back(arc.fraction_of_turn(u));
+    out.lfs.push_back(arc.lfs_at(u));
+  }
+  for (int i = 0; i < count; ++i) out.true_edges.push_back(make_edge(first + i, first + (i + 1) % count));
+}
+
+struct Box {
+  Point2 low{HUGE_VAL, HUGE_VAL}, high{-HUGE_VAL, -HUGE_VAL};
+};
+
+Box bounding_box(const Scene& scene) {
+  Box box;
+  for (const auto& curve : scene.curves) {
+    for (const Point2 p : curve.points) {
+      box.low = {std::min(box.low.x, p.x), std::min(box.low.y, p.y)};
+      box.high = {std::max(box.high.x, p.x), std::max(box.high.y, p.y)};
+    }
+  }
+  return box;
+}
+
 }  // namespace
 
 SampledScene epsilon_sample(const Scene& scene, double epsilon, std::uint64_t seed, double min_step_fraction) {
@@ -136,18 +171,76 @@ SampledScene epsilon_sample(const Scene& scene, double epsilon, std::uint64_t se
       positions.push_back(b);
       a = b;
     }
-    const int first = static_cast<int>(out.points.size());
-    const int count = static_cast<int>(positions.size());
-    for (const double u : positions) {
-      out.points.push_back(arc.point_at(u));
-      out.curve.push_back(c);
-      out.parameter.push_back(arc.fraction_of_turn(u));
-      out.lfs.push_back(arc.lfs_at(u));
-    }
-    for (int i = 0; i < count; ++i) out.true_edges.push_back(make_edge(first + i, first + (i + 1) % count));
+    append_curve_samples(out, arc, c, positions);
   }
   std::sort(out.true_edges.begin(), out.true_edges.end());
   return out;
+}
+
+SampledScene arc_length_sample(const Scene& scene, int count, bool random_positions, std::uint64_t seed) {
+  const int curves = static_cast<int>(scene.curves.size());
+  if (count < 3 * curves) throw std::invalid_argument("need at least 3 samples per curve (" + std::to_string(3 * curves) + ")");
+  std::vector<ArcLength> arcs;
+  double total = 0.0;
+  for (const auto& curve : scene.curves) total += arcs.emplace_back(curve).total();
+  // Largest-remainder shares of `count` in proportion to length, at least 3 each.
+  std::vector<int> share(curves);
+  int given = 0;
+  for (int c = 0; c < curves; ++c) given += share[c] = std::max(3, static_cast<int>(count * arcs[c].total() / total));
+  for (int c = 0; given < count; c = (c + 1) % curves) ++share[c], ++given;
+  for (int c = curves - 1; given > count; c = (c + curves - 1) % curves) {
+    if (share[c] > 3) --share[c], --given;
+  }
+  Random random(seed);
+  SampledScene out;
+  for (int c = 0; c < curves; ++c) {
+    const double length = arcs[c].total();
+    std::vector<double> positions(share[c]);
+    if (random_positions) {
+      for (double& u : positions) u = length * random.uniform();
+      std::sort(positions.begin(), positions.end());
+    } else {
+      const double start = length * random.uniform();
+      for (int i = 0; i < share[c]; ++i) positions[i] = start + length * i / share[c];
+    }
+    append_curve_samples(out, arcs[c], c, positions);
+  }
+  std::sort(out.true_edges.begin(), out.true_edges.end());
+  return out;
+}
+
+void add_normal_noise(const Scene& scene, SampledScene& samples, double level, NoiseScale scale, std::uint64_t seed) {
+  if (!(level >= 0) || !std::isfinite(level)) throw std::invalid_argument("noise level must be a number >= 0");
+  const Box box = bounding_box(scene);
+  const double diagonal = distance(box.low, box.high);
+  std::vector<ArcLength> arcs(scene.curves.begin(), scene.curves.end());
+  Random random(seed);
+  for (size_t i = 0; i < samples.points.size(); ++i) {
+    const int c = samples.curve[i];
+    if (c < 0) continue;
+    const ArcLength& arc = arcs[c];
+    const double sigma = level * (scale == NoiseScale::local_feature_size ? samples.lfs[i] : diagonal);
+    const double u = samples.parameter[i] * arc.total();
+    samples.points[i] = samples.points[i] + (sigma * random.gaussian()) * arc.normal_at(u);
+  }
+}
+
+void add_outliers(const Scene& scene, SampledScene& samples, double fraction, std::uint64_t seed) {
+  if (!(fraction >= 0) || !std::isfinite(fraction)) throw std::invalid_argument("outlier fraction must be a number >= 0");
+  const long curve_samples = std::count_if(samples.curve.begin(), samples.curve.end(), [](int c) { return c >= 0; });
+  const long count = std::lround(fraction * static_cast<double>(curve_samples));
+  Box box = bounding_box(scene);
+  const Point2 margin = 0.1 * (box.high - box.low);
+  box.low = box.low - margin, box.high = box.high + margin;
+  Random random(seed);
+  for (long i = 0; i < count; ++i) {
+    const double x = random.uniform(box.low.x, box.high.x);
+    const double y = random.uniform(box.low.y, box.high.y);
+    samples.points.push_back({x, y});
+    samples.curve.push_back(-1);
+    samples.parameter.push_back(kNaN);
+    samples.lfs.push_back(kNaN);
+  }
 }
 
 double achieved_epsilon(const Scene& scene, const SampledScene& samples) {

@@ -26,4 +26,22 @@ SampledScene epsilon_sample(const Scene& scene, double epsilon, std::uint64_t se
 // vertices (the certificate the tests check).
 double achieved_epsilon(const Scene& scene, const SampledScene& samples);
 
+// `count` samples along arc length, shared among the curves in proportion to their length
+// (at least 3 each): equally spaced from a random start on each curve, or, with
+// `random_positions`, at independent uniform positions (then sorted along the curve).
+SampledScene arc_length_sample(const Scene& scene, int count, bool random_positions, std::uint64_t seed);
+
+enum class NoiseScale { local_feature_size, bounding_box_diagonal };
+
+// Moves every curve sample along the curve normal at its parameter by a Gaussian amount of
+// standard deviation `level` times the local feature size there, or times the diagonal of
+// the scene's bounding box. The truth (curve, parameter, lfs, edges) stays as drawn.
+// Throws std::invalid_argument unless level is a finite number >= 0.
+void add_normal_noise(const Scene& scene, SampledScene& samples, double level, NoiseScale scale, std::uint64_t seed);
+
+// Appends round(fraction * number of curve samples) outliers, uniform in the scene's
+// bounding box grown by 10% on every side (curve -1, parameter and lfs NaN, no edges).
+// Throws std::invalid_argument unless fraction is a finite number >= 0.
+void add_outliers(const Scene& scene, SampledScene& samples, double fraction, std::uint64_t seed);
+
 }  // namespace curvebench

@@ -1,6 +1,7 @@
 #include "generators/scene_builder.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 #include <stdexcept>
 
@@ -34,31 +35,58 @@ std::vector<Point2> closed_parametric_polyline(const std::function<Point2(double
   return points;
 }
 
-Scene make_scene(std::string name, std::vector<std::vector<Point2>> polylines, const std::function<double(Point2)>& exact_lfs) {
-  for (auto& poly : polylines) {
-    poly.erase(std::unique(poly.begin(), poly.end()), poly.end());
-    while (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();
-    if (poly.size() < 3) throw std::invalid_argument(name + ": a closed curve needs at least 3 distinct vertices");
+Scene make_scene(std::string name, std::vector<DenseCurve> curves, const std::function<double(Point2)>& exact_lfs) {
+  std::vector<std::vector<Point2>> polylines;
+  for (auto& curve : curves) {
+    auto& poly = curve.points;
+    const int n = static_cast<int>(poly.size());
+    if (n < 3) throw std::invalid_argument(name + ": a closed curve needs at least 3 vertices");
     double twice_area = 0.0;
-    for (size_t i = 0; i < poly.size(); ++i) twice_area += cross(poly[i], poly[(i + 1) % poly.size()]);
-    if (twice_area < 0) std::reverse(poly.begin() + 1, poly.end());
+    for (int i = 0; i < n; ++i) twice_area += cross(poly[i], poly[(i + 1) % n]);
+    if (twice_area < 0) {
+      std::reverse(poly.begin() + 1, poly.end());
+      for (int& corner : curve.corners) corner = (n - corner) % n;
+      std::sort(curve.corners.begin(), curve.corners.end());
+    }
+    polylines.push_back(poly);
   }
   if (const std::string crossing = find_polyline_crossing(polylines); !crossing.empty()) {
     throw std::invalid_argument(name + ": curves are not simple and disjoint (" + crossing + ")");
   }
-  Scene scene;
-  scene.name = std::move(name);
-  std::vector<std::vector<double>> lfs;
   if (exact_lfs) {
-    for (const auto& poly : polylines) {
-      lfs.emplace_back();
-      for (const Point2 p : poly) lfs.back().push_back(exact_lfs(p));
+    for (auto& curve : curves) {
+      curve.lfs.clear();
+      for (const Point2 p : curve.points) curve.lfs.push_back(exact_lfs(p));
     }
   } else {
-    lfs = local_feature_size(polylines);
+    auto lfs = local_feature_size(polylines);
+    for (size_t c = 0; c < curves.size(); ++c) curves[c].lfs = std::move(lfs[c]);
   }
-  for (size_t c = 0; c < polylines.size(); ++c) scene.curves.push_back({std::move(polylines[c]), std::move(lfs[c])});
-  return scene;
+  return Scene{std::move(name), std::move(curves)};
+}
+
+std::vector<DenseCurve> densify_polygons(const std::vector<std::vector<Point2>>& polygons, int dense) {
+  double perimeter = 0.0;
+  for (const auto& polygon : polygons) {
+    for (size_t i = 0; i < polygon.size(); ++i) perimeter += distance(polygon[i], polygon[(i + 1) % polygon.size()]);
+  }
+  const double spacing = perimeter / std::max(dense, 3);
+  const double min_turn_sine = std::sin(std::numbers::pi / 180);
+  std::vector<DenseCurve> curves;
+  for (const auto& polygon : polygons) {
+    DenseCurve curve;
+    const size_t n = polygon.size();
+    for (size_t i = 0; i < n; ++i) {
+      const Point2 previous = polygon[(i + n - 1) % n], here = polygon[i], next = polygon[(i + 1) % n];
+      const Point2 in = here - previous, out = next - here;
+      const bool turns = std::abs(cross(in, out)) > min_turn_sine * norm(in) * norm(out) || dot(in, out) < 0;
+      if (turns) curve.corners.push_back(static_cast<int>(curve.points.size()));
+      const int pieces = std::max(1, static_cast<int>(std::ceil(norm(out) / spacing)));
+      for (int k = 0; k < pieces; ++k) curve.points.push_back(here + (static_cast<double>(k) / pieces) * out);
+    }
+    curves.push_back(std::move(curve));
+  }
+  return curves;
 }
 
 }  // namespace curvebench

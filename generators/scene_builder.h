@@ -4,6 +4,7 @@
 
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/point.h"
@@ -15,12 +16,24 @@ namespace curvebench {
 // the curve equally spaced in arc length (to about 1e-6 relative), starting at t = 0.
 std::vector<Point2> closed_parametric_polyline(const std::function<Point2(double)>& curve, int dense);
 
-// In: closed polylines. Out: a Scene whose curves are these polylines made counter-clockwise
-// (the first vertex kept first), consecutive duplicate vertices dropped, and local feature
-// size measured (local_feature_size.h) unless `exact_lfs` gives it. Throws
-// std::invalid_argument if a polyline has fewer than three vertices or the polylines are
-// not simple and disjoint.
-Scene make_scene(std::string name, std::vector<std::vector<Point2>> polylines,
-                 const std::function<double(Point2)>& exact_lfs = nullptr);
+// A curve without corners, local feature size still to be measured.
+inline DenseCurve smooth_curve(std::vector<Point2> points) {
+  DenseCurve curve;
+  curve.points = std::move(points);
+  return curve;
+}
+
+// In: closed polylines with points (and corners, if any) filled in. Out: a Scene whose curves
+// are these made counter-clockwise (the first vertex kept first, corners renumbered), and
+// local feature size measured (local_feature_size.h) unless `exact_lfs` gives it. Throws
+// std::invalid_argument naming the scene if a polyline has fewer than three vertices,
+// repeats a vertex, or the polylines are not simple and disjoint.
+Scene make_scene(std::string name, std::vector<DenseCurve> curves, const std::function<double(Point2)>& exact_lfs = nullptr);
+
+// In: closed polygons (the last vertex joins the first) and the total number of vertices
+// wanted. Out: the polygons with vertices added along every edge, spaced at most the
+// total perimeter / `dense`; the input vertices are kept, and listed as corners where the
+// boundary turns by more than a degree.
+std::vector<DenseCurve> densify_polygons(const std::vector<std::vector<Point2>>& polygons, int dense);
 
 }  // namespace curvebench

@@ -52,7 +52,7 @@ Scene l_shape_scene(double arm_width, int dense = 8192);  // L inside the 2x2 sq
 Scene horned_scene(double inner_radius, double offset, int dense = 8192);
 
 // Closed polygons (imported outlines): each ring densified to about `dense` vertices in all,
-// every input vertex where the boundary turns kept as a corner. Throws std::invalid_argument
+// every input vertex where the boundary turns by more than 10 degrees kept as a corner. Throws std::invalid_argument
 // if a ring has fewer than 3 distinct vertices or the rings are not simple and disjoint.
 Scene polygon_scene(std::string name, const std::vector<std::vector<Point2>>& rings, int dense = 8192);
 

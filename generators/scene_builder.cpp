@@ -71,7 +71,7 @@ std::vector<DenseCurve> densify_polygons(const std::vector<std::vector<Point2>>&
     for (size_t i = 0; i < polygon.size(); ++i) perimeter += distance(polygon[i], polygon[(i + 1) % polygon.size()]);
   }
   const double spacing = perimeter / std::max(dense, 3);
-  const double min_turn_sine = std::sin(std::numbers::pi / 180);
+  const double min_turn_sine = std::sin(std::numbers::pi / 18);
   std::vector<DenseCurve> curves;
   for (const auto& polygon : polygons) {
     DenseCurve curve;

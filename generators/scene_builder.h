@@ -33,7 +33,7 @@ Scene make_scene(std::string name, std::vector<DenseCurve> curves, const std::fu
 // In: closed polygons (the last vertex joins the first) and the total number of vertices
 // wanted. Out: the polygons with vertices added along every edge, spaced at most the
 // total perimeter / `dense`; the input vertices are kept, and listed as corners where the
-// boundary turns by more than a degree.
+// boundary turns by more than 10 degrees (an outline flattened from smooth arcs turns less).
 std::vector<DenseCurve> densify_polygons(const std::vector<std::vector<Point2>>& polygons, int dense);
 
 }  // namespace curvebench

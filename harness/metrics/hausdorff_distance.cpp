@@ -99,24 +99,38 @@ class SegmentGrid {
   std::vector<std::vector<int>> cells_;
 };
 
-double directed_distance(std::span<const Segment2> from, const SegmentGrid& to, double step) {
+double directed_distance(std::span<const Segment2> from, const SegmentGrid& to, double tolerance) {
+  struct Piece {
+    Point2 source, target;
+    double source_distance, target_distance;
+  };
+  std::vector<Piece> pieces;
+  pieces.reserve(from.size());
   double farthest = 0.0;
   for (const Segment2& s : from) {
-    const int pieces = std::max(1, static_cast<int>(std::ceil(distance(s.source, s.target) / step)));
-    for (int k = 0; k <= pieces; ++k) {
-      const Point2 p = s.source + (static_cast<double>(k) / pieces) * (s.target - s.source);
-      farthest = std::max(farthest, to.distance_to_nearest(p));
-    }
+    pieces.push_back({s.source, s.target, to.distance_to_nearest(s.source), to.distance_to_nearest(s.target)});
+    farthest = std::max({farthest, pieces.back().source_distance, pieces.back().target_distance});
+  }
+  while (!pieces.empty()) {
+    const Piece piece = pieces.back();
+    pieces.pop_back();
+    const double bound = 0.5 * (piece.source_distance + piece.target_distance + distance(piece.source, piece.target));
+    if (bound <= farthest + tolerance) continue;
+    const Point2 middle = 0.5 * (piece.source + piece.target);
+    const double middle_distance = to.distance_to_nearest(middle);
+    farthest = std::max(farthest, middle_distance);
+    pieces.push_back({piece.source, middle, piece.source_distance, middle_distance});
+    pieces.push_back({middle, piece.target, middle_distance, piece.target_distance});
   }
   return farthest;
 }
 
 }  // namespace
 
-double hausdorff_distance(std::span<const Segment2> a, std::span<const Segment2> b, double step) {
-  if (!(step > 0.0)) throw std::invalid_argument("Hausdorff distance: the sampling step must be positive");
+double hausdorff_distance(std::span<const Segment2> a, std::span<const Segment2> b, double tolerance) {
+  if (!(tolerance > 0.0)) throw std::invalid_argument("Hausdorff distance: the tolerance must be positive");
   if (a.empty() || b.empty()) return std::numeric_limits<double>::infinity();
-  return std::max(directed_distance(a, SegmentGrid(b), step), directed_distance(b, SegmentGrid(a), step));
+  return std::max(directed_distance(a, SegmentGrid(b), tolerance), directed_distance(b, SegmentGrid(a), tolerance));
 }
 
 }  // namespace curvebench

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "metrics/curve_topology.h"
@@ -44,15 +45,26 @@ TEST(HausdorffDistance, DistancesAreToSegmentsNotToTheirEnds) {
   EXPECT_DOUBLE_EQ(hausdorff_distance(segment, vee, 0.3), 1.0);
 }
 
-TEST(HausdorffDistance, SamplingUnderestimatesByAtMostHalfAStep) {
-  // A segment against its two end points: the exact answer, 0.5, is at the midpoint. A step
-  // of 0.4 samples the segment at thirds, which see 1/3: below, but within 0.4 / 2.
+TEST(HausdorffDistance, TheFarthestPointInsideASegmentIsFound) {
+  // A segment against its two end points: the exact answer, 0.5, is at the midpoint, where
+  // neither set has a vertex. The result is never above it and at most the tolerance below.
   const std::vector<Segment2> segment{{{0, 0}, {1, 0}}};
   const std::vector<Segment2> ends{{{0, 0}, {0, 0}}, {{1, 0}, {1, 0}}};
-  const double sampled = hausdorff_distance(segment, ends, 0.4);
-  EXPECT_DOUBLE_EQ(sampled, 1.0 / 3.0);
-  EXPECT_GE(sampled, 0.5 - 0.4 / 2);
-  EXPECT_DOUBLE_EQ(hausdorff_distance(segment, ends, 0.01), 0.5);
+  for (double tolerance : {0.3, 0.1, 1e-3, 1e-9}) {
+    const double found = hausdorff_distance(segment, ends, tolerance);
+    EXPECT_LE(found, 0.5);
+    EXPECT_GE(found, 0.5 - tolerance);
+  }
+  // A chord of the unit circle against the circle drawn finely: the farthest point is the
+  // chord's middle, at the sagitta 1 - cos(pi / 8) from the arc.
+  std::vector<Segment2> arc;
+  const int pieces = 20000;
+  for (int k = 0; k < pieces; ++k) {
+    const double t0 = (std::numbers::pi / 4) * k / pieces, t1 = (std::numbers::pi / 4) * (k + 1) / pieces;
+    arc.push_back({{std::cos(t0), std::sin(t0)}, {std::cos(t1), std::sin(t1)}});
+  }
+  const std::vector<Segment2> chord{{{1, 0}, {std::cos(std::numbers::pi / 4), std::sin(std::numbers::pi / 4)}}};
+  EXPECT_NEAR(hausdorff_distance(arc, chord, 1e-9), 1 - std::cos(std::numbers::pi / 8), 1e-8);
 }
 
 TEST(HausdorffDistance, EmptySetIsInfinitelyFar) {

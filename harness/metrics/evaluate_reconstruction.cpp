@@ -1,0 +1,95 @@
+#include "metrics/evaluate_reconstruction.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include "metrics/hausdorff_distance.h"
+#include "metrics/l2_error.h"
+#include "metrics/segments.h"
+
+namespace curvebench {
+namespace {
+
+// Hausdorff distances are exact to this fraction of the diagonal (hausdorff_distance.h).
+constexpr double kHausdorffToleranceOverDiagonal = 1e-4;
+
+std::vector<Segment2> true_curve_segments(const GroundTruth& truth) {
+  std::vector<Segment2> segments;
+  for (const auto& curve : truth.curves) {
+    const auto closed = closed_polyline_segments(curve.vertices);
+    segments.insert(segments.end(), closed.begin(), closed.end());
+  }
+  return segments;
+}
+
+double bounding_box_diagonal(const GroundTruth& truth) {
+  double min_x = INFINITY, min_y = INFINITY, max_x = -INFINITY, max_y = -INFINITY;
+  for (const auto& curve : truth.curves) {
+    for (const Point2 p : curve.vertices) {
+      min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
+      min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
+    }
+  }
+  return std::hypot(max_x - min_x, max_y - min_y);
+}
+
+// The edges of a graph, plus each vertex that has no edge as a point.
+std::vector<Segment2> graph_segments(std::span<const Point2> vertices, std::span<const Edge> edges) {
+  std::vector<Segment2> segments = edge_segments(vertices, edges);
+  std::vector<bool> on_edge(vertices.size(), false);
+  for (const Edge& e : edges) on_edge[e[0]] = on_edge[e[1]] = true;
+  for (size_t v = 0; v < vertices.size(); ++v) {
+    if (!on_edge[v]) segments.push_back({vertices[v], vertices[v]});
+  }
+  return segments;
+}
+
+}  // namespace
+
+ReconstructionMetrics evaluate_reconstruction(const GroundTruth& truth, std::span<const Point2> points,
+                                              const Reconstruction& reconstruction) {
+  if (points.size() != truth.samples.size()) {
+    throw std::invalid_argument("the points file has " + std::to_string(points.size()) + " points but the ground truth describes " +
+                                std::to_string(truth.samples.size()) + " samples");
+  }
+  const std::vector<Segment2> true_curves = true_curve_segments(truth);
+  const double diagonal = bounding_box_diagonal(truth);
+  const double hausdorff_tolerance = kHausdorffToleranceOverDiagonal * diagonal;
+
+  ReconstructionMetrics metrics;
+  metrics.true_curves = static_cast<int>(truth.curves.size());
+  metrics.oracle_l2_error = l2_error(true_curves, edge_segments(points, truth.edges));
+
+  if (reconstruction.curve_edges) {
+    const std::vector<Edge>& edges = *reconstruction.curve_edges;
+    const bool interpolating = !reconstruction.curve_vertices;
+    const std::vector<Segment2> curve =
+        edge_segments(interpolating ? points : std::span<const Point2>(*reconstruction.curve_vertices), edges);
+    metrics.l2_error = l2_error(true_curves, curve);
+    metrics.hausdorff = hausdorff_distance(true_curves, curve, hausdorff_tolerance) / diagonal;
+    metrics.topology = curve_topology(edges);
+    if (interpolating) metrics.edges = edge_agreement(edges, truth.edges);
+  }
+
+  if (reconstruction.medial_axis) {
+    const auto reconstructed = graph_segments(reconstruction.medial_axis->vertices, reconstruction.medial_axis->edges);
+    const auto expected = graph_segments(truth.medial_axis.vertices, truth.medial_axis.edges);
+    metrics.medial_axis_hausdorff = hausdorff_distance(expected, reconstructed, hausdorff_tolerance) / diagonal;
+  }
+
+  if (reconstruction.dominant_points) {
+    std::vector<int> curve_of_sample;
+    std::vector<double> parameter_of_sample;
+    for (const auto& sample : truth.samples) {
+      curve_of_sample.push_back(sample.curve);
+      parameter_of_sample.push_back(sample.parameter);
+    }
+    metrics.dominant_points = dominant_point_quality(points, curve_of_sample, parameter_of_sample, *reconstruction.dominant_points);
+  }
+  return metrics;
+}
+
+}  // namespace curvebench

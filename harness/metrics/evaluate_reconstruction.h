@@ -1,0 +1,52 @@
+// Every metric of DESIGN.md ("Metrics") for one reconstruction against its ground truth.
+//
+// In:  the ground truth, the input points it describes (file order, one per truth sample)
+//      and a reconstruction of those points.
+// Out: the metrics of each output the reconstruction has; those of an output it lacks stay
+//      absent. The oracle L2 error needs only the truth and is always there.
+//   curve          l2_error        even-odd region of the edges vs the true region (l2_error.h)
+//                  oracle_l2_error the same for the polygons joining the samples in true order
+//                                  (the true adjacency), i.e. the error the sampling itself causes
+//                  hausdorff       Hausdorff distance between the true dense curves and the
+//                                  edges, over the true curves' bounding-box diagonal, exact to
+//                                  10^-4 of the diagonal (hausdorff_distance.h); infinite when
+//                                  the reconstruction has no edge
+//                  topology        manifold, components, closed components (curve_topology.h),
+//                                  compared with true_curves
+//                  edges           precision, recall, exactness against the true adjacency
+//                                  (edge_agreement.h); only for interpolating reconstructions,
+//                                  whose edges join input points
+//   medial axis    medial_axis_hausdorff  Hausdorff distance between the true and the
+//                                  reconstructed interior medial axes (isolated vertices count
+//                                  as points), over the same diagonal; infinite if either is empty
+//   dominant points  count, CR, ISE, FOM over the samples (dominant_point_quality.h)
+// Throws std::invalid_argument if the point count differs from the truth's sample count, and
+// std::out_of_range if an edge of the reconstruction names a vertex it does not have.
+#pragma once
+
+#include <optional>
+#include <span>
+
+#include "core/reconstruction.h"
+#include "io/ground_truth_json.h"
+#include "metrics/curve_topology.h"
+#include "metrics/dominant_point_quality.h"
+#include "metrics/edge_agreement.h"
+
+namespace curvebench {
+
+struct ReconstructionMetrics {
+  int true_curves = 0;
+  double oracle_l2_error = 0.0;
+  std::optional<double> l2_error;
+  std::optional<double> hausdorff;  // over the diagonal; may be infinite
+  std::optional<CurveTopology> topology;
+  std::optional<EdgeAgreement> edges;
+  std::optional<double> medial_axis_hausdorff;  // over the diagonal; may be infinite
+  std::optional<DominantPointQuality> dominant_points;
+};
+
+ReconstructionMetrics evaluate_reconstruction(const GroundTruth& truth, std::span<const Point2> points,
+                                              const Reconstruction& reconstruction);
+
+}  // namespace curvebench

@@ -1,10 +1,10 @@
 // Nearest-point queries on a fixed planar point set by a static k-d tree.
 //
 // In: the points to search. Query: any point. Out: the index of a nearest point (-1 if the
-// set is empty). Used instead of the Delaunay-backed NearestSite for Voronoi vertices: they
+// set is empty). A k-d tree rather than a walk on a Delaunay triangulation: Voronoi vertices
 // cluster along the medial axis, often nearly collinear (an ellipse's lie on one segment),
-// where a greedy walk on their triangulation meets huge vertex fans and becomes linear per
-// query; the k-d tree stays logarithmic on any distribution.
+// where a greedy walk meets huge vertex fans and becomes linear per query; the k-d tree
+// stays logarithmic on any distribution.
 #pragma once
 
 #include <span>

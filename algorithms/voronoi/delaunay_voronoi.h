@@ -1,4 +1,4 @@
-// The shared Delaunay/Voronoi layer: the only place (with nearest_site.cpp) that includes
+// The shared Delaunay/Voronoi layer: the only place that includes
 // CGAL's triangulation headers. It builds CGAL::Delaunay_triangulation_2 with exact
 // predicates once and hands out flat arrays, delaunator style.
 //

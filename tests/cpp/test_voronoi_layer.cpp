@@ -6,7 +6,6 @@
 
 #include "test_support.h"
 #include "voronoi/delaunay_voronoi.h"
-#include "voronoi/nearest_site.h"
 
 namespace curvebench {
 namespace {
@@ -115,15 +114,6 @@ TEST(VoronoiLayer, ConvexHullMembership) {
   EXPECT_TRUE(in_convex_hull(dv, {4, 2}));  // on the boundary counts as inside
   EXPECT_FALSE(in_convex_hull(dv, {4.0000001, 2}));
   EXPECT_FALSE(in_convex_hull(dv, {-1, -1}));
-}
-
-TEST(NearestSiteIndex, FindsTheNearestPoint) {
-  const std::vector<Point2> points{{0, 0}, {10, 0}, {0, 10}, {7, 7}};
-  const NearestSite index(points);
-  EXPECT_EQ(index.nearest({1, 1}), 0);
-  EXPECT_EQ(index.nearest({9, 1}), 1);
-  EXPECT_EQ(index.nearest({6, 8}), 3);
-  EXPECT_EQ(NearestSite(std::vector<Point2>{}).nearest({0, 0}), -1);
 }
 
 }  // namespace

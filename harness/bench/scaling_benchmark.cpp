@@ -1,21 +1,51 @@
 // Scaling suite: every algorithm against the bare CGAL Delaunay construction of the same
-// points, side by side in one run. Each algorithm's row carries its time as a ratio to the
-// Delaunay time measured for the same n in this run (counter "x_delaunay"), its time per
-// point, the time per point of its phases after its own "delaunay" phase
-// ("after_delaunay_ns_per_point", from Reconstruction::timing_ms), and the process's peak
-// resident memory so far. Times are the thread's CPU time, so that other work on the machine
-// does not enter the ratios; the code timed is single-threaded.
+// points, side by side in one run, on two inputs at n = 10^3 ... 10^6 (10^7 with --max_n):
+//   smooth  n random positions along the rose r = 1 + 0.3 cos(5t), a smooth closed curve
+//           with five pseudo-concavities;
+//   noisy   the same positions, each moved along the curve normal by a Gaussian amount of
+//           standard deviation half the mean sample spacing (curve length / n), so that the
+//           noise stays the same relative to the sampling at every n.
+// Benchmarks are named <algorithm>/<input>/n:<n> ("delaunay" is the bare construction).
 //
-// Run: curvebench_benchmark [--benchmark_format=json] [--benchmark_filter=...]
+// Counters of each row:
+//   ns_per_point                 time per point
+//   x_delaunay                   time over the bare Delaunay time of the same input and n,
+//                                measured earlier in this run (the Delaunay family runs first)
+//   after_delaunay_ns_per_point  time per point of the phases after the algorithm's own
+//                                "delaunay" phase: the CPU time times the share of the
+//                                wall-clock phase times (Reconstruction::timing_ms) after it
+//   peak_MiB, input_MiB          peak resident memory (VmHWM of /proc/self/status) of a fresh
+//                                process that makes the same points and reconstructs them
+//                                once, and of the same process before the reconstruction
+//                                (executable, libraries and the points). The process is this
+//                                executable started again with --peak_memory_child, so each
+//                                row's peak is its own and not the running maximum of the suite.
+// Times are the thread's CPU time, so that other work on the machine does not enter the
+// ratios; the code timed is single-threaded.
+//
+// A run predicted to take more than --max_run_seconds (its time at the previous n, scaled
+// linearly in n) or more memory than is available (its peak at the previous n, scaled the
+// same way, against MemAvailable of /proc/meminfo) is skipped and reported as an error row
+// saying why, and so are the larger n of the same algorithm and input.
+//
+// Run: curvebench_benchmark [--max_n=1000000] [--max_run_seconds=60]
+//                           [--benchmark_out=scaling.json --benchmark_out_format=json]
+//                           [--benchmark_filter=...] [--benchmark_min_time=...]
 #include <benchmark/benchmark.h>
-#include <sys/resource.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <fstream>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <random>
+#include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "core/registry.h"
@@ -24,9 +54,43 @@
 namespace curvebench {
 namespace {
 
-// n points at random positions along the rose r = 1 + 0.3 cos(5t), a smooth closed curve
-// with five pseudo-concavities. Fixed seed: every run times the same points.
-std::vector<Point2> smooth_curve_points(int n) {
+const std::vector<std::string> kInputs = {"smooth", "noisy"};
+
+struct Settings {
+  long long max_n = 1'000'000;
+  double max_run_seconds = 60.0;
+};
+
+Settings& settings() {
+  static Settings value;
+  return value;
+}
+
+Point2 rose_point(double t) {
+  const double r = 1.0 + 0.3 * std::cos(5 * t);
+  return {r * std::cos(t), r * std::sin(t)};
+}
+
+Point2 rose_unit_normal(double t) {
+  const double r = 1.0 + 0.3 * std::cos(5 * t), dr = -1.5 * std::sin(5 * t);
+  const double tx = dr * std::cos(t) - r * std::sin(t), ty = dr * std::sin(t) + r * std::cos(t);
+  const double length = std::hypot(tx, ty);
+  return {ty / length, -tx / length};
+}
+
+double rose_length() {
+  constexpr int kSegments = 100'000;
+  double length = 0.0;
+  for (int i = 0; i < kSegments; ++i) {
+    const Point2 a = rose_point(2 * std::numbers::pi * i / kSegments);
+    const Point2 b = rose_point(2 * std::numbers::pi * (i + 1) / kSegments);
+    length += std::hypot(b.x - a.x, b.y - a.y);
+  }
+  return length;
+}
+
+// The points of `input` ("smooth" or "noisy") at n. Fixed seeds: every run times the same points.
+std::vector<Point2> make_points(const std::string& input, int n) {
   std::mt19937_64 rng(20190501u + static_cast<unsigned>(n));
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<double> t(n);
@@ -34,23 +98,29 @@ std::vector<Point2> smooth_curve_points(int n) {
   std::sort(t.begin(), t.end());
   std::vector<Point2> points;
   points.reserve(n);
-  for (double angle : t) {
-    const double r = 1.0 + 0.3 * std::cos(5 * angle);
-    points.push_back({r * std::cos(angle), r * std::sin(angle)});
+  for (double angle : t) points.push_back(rose_point(angle));
+  if (input == "noisy") {
+    std::normal_distribution<double> gaussian(0.0, 0.5 * rose_length() / n);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double shift = gaussian(rng);
+      const Point2 normal = rose_unit_normal(t[i]);
+      points[i] = {points[i].x + shift * normal.x, points[i].y + shift * normal.y};
+    }
   }
   return points;
 }
 
-const std::vector<Point2>& cached_points(int n) {
-  static std::map<int, std::vector<Point2>> cache;
-  auto it = cache.find(n);
-  if (it == cache.end()) it = cache.emplace(n, smooth_curve_points(n)).first;
-  return it->second;
-}
-
-std::map<int, double>& delaunay_seconds() {  // mean Delaunay time per n, from this run
-  static std::map<int, double> seconds;
-  return seconds;
+// Points of the one input and n the suite is at; the previous ones are released, so that the
+// suite's own memory stays near that of its current run.
+const std::vector<Point2>& current_points(const std::string& input, int n) {
+  static std::pair<std::string, int> key;
+  static std::vector<Point2> points;
+  if (key != std::pair(input, n)) {
+    points = {};
+    points = make_points(input, n);
+    key = {input, n};
+  }
+  return points;
 }
 
 double thread_cpu_seconds() {
@@ -59,57 +129,188 @@ double thread_cpu_seconds() {
   return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
-double peak_memory_mib() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_maxrss / 1024.0;
+// A "Key:   value kB" line of a /proc file, in MiB.
+double proc_field_mib(const char* path, const std::string& key) {
+  std::ifstream file(path);
+  std::string line;
+  while (std::getline(file, line)) {
+    if (line.rfind(key + ":", 0) == 0) return std::stod(line.substr(key.size() + 1)) / 1024.0;
+  }
+  return 0.0;
 }
 
-void report(benchmark::State& state, int n, double total_seconds) {
-  const double mean = total_seconds / static_cast<double>(state.iterations());
-  state.counters["ns_per_point"] = 1e9 * mean / n;
-  state.counters["peak_MiB"] = peak_memory_mib();
-  const auto it = delaunay_seconds().find(n);
-  if (it != delaunay_seconds().end()) state.counters["x_delaunay"] = mean / it->second;
+void reconstruct_once(const std::string& algorithm, std::span<const Point2> points) {
+  if (algorithm == "delaunay") {
+    benchmark::DoNotOptimize(bare_delaunay_vertex_count(points));
+    return;
+  }
+  const Algorithm& chosen = find_algorithm(algorithm);
+  auto result = chosen.reconstruct(points, resolve_parameters(chosen.parameters(), {}, chosen.name()));
+  benchmark::DoNotOptimize(result);
 }
 
-void BM_Delaunay(benchmark::State& state) {
+// The child side of the memory measurement: "<algorithm>/<input>/<n>" in, "input_MiB peak_MiB" out.
+int run_peak_memory_child(const std::string& run) {
+  std::istringstream fields(run);
+  std::string algorithm, input, n;
+  std::getline(fields, algorithm, '/');
+  std::getline(fields, input, '/');
+  std::getline(fields, n);
+  const auto points = make_points(input, std::stoi(n));
+  const double input_mib = proc_field_mib("/proc/self/status", "VmHWM");
+  reconstruct_once(algorithm, points);
+  std::printf("%.3f %.3f\n", input_mib, proc_field_mib("/proc/self/status", "VmHWM"));
+  return 0;
+}
+
+struct PeakMemory {
+  double input_mib = 0.0, peak_mib = 0.0;
+  std::string failure;  // empty on success
+};
+
+PeakMemory measure_peak_memory_in_child(const std::string& algorithm, const std::string& input, int n) {
+  char executable[4096] = {};
+  const ssize_t length = readlink("/proc/self/exe", executable, sizeof executable - 1);
+  if (length <= 0) return {0, 0, "cannot find this executable in /proc/self/exe"};
+  const std::string command = std::string("'") + executable + "' --peak_memory_child=" + algorithm + "/" + input +
+                              "/" + std::to_string(n) + " 2>&1";
+  FILE* child = popen(command.c_str(), "r");
+  if (!child) return {0, 0, "cannot start the memory-measuring process"};
+  std::string output;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, child)) output += buffer;
+  const int status = pclose(child);
+  PeakMemory memory;
+  if (status != 0 || std::sscanf(output.c_str(), "%lf %lf", &memory.input_mib, &memory.peak_mib) != 2) {
+    memory.failure = "memory-measuring process failed (status " + std::to_string(status) + "): " + output;
+  }
+  return memory;
+}
+
+struct Run {  // one (algorithm, input, n), as far as it got
+  std::string skip_reason;  // empty unless skipped
+  PeakMemory memory;
+  double seconds = 0.0;  // mean CPU seconds per iteration, once timed
+};
+
+// By (algorithm, input), then n. Google Benchmark calls a benchmark function several times
+// per n (growing the iteration count), so the memory is measured at the first call only.
+std::map<std::pair<std::string, std::string>, std::map<int, Run>>& runs() {
+  static std::map<std::pair<std::string, std::string>, std::map<int, Run>> by_algorithm_and_input;
+  return by_algorithm_and_input;
+}
+
+std::map<std::pair<std::string, int>, double>& delaunay_seconds() {  // by (input, n), from this run
+  static std::map<std::pair<std::string, int>, double> seconds;
+  return seconds;
+}
+
+// Why the run at n should not start, judged from the same algorithm and input at the largest
+// smaller n; or empty.
+std::string reason_to_skip(const std::map<int, Run>& sizes, int n) {
+  const auto below = sizes.lower_bound(n);
+  if (below == sizes.begin()) return "";
+  const auto& [previous_n, previous] = *std::prev(below);
+  if (!previous.skip_reason.empty()) return "skipped: a smaller n was skipped or failed";
+  const double growth = static_cast<double>(n) / previous_n;
+  const double predicted_seconds = previous.seconds * growth;
+  const double predicted_mib = previous.memory.peak_mib * growth;
+  const double available_mib = proc_field_mib("/proc/meminfo", "MemAvailable");
+  char reason[256] = "";
+  if (predicted_seconds > settings().max_run_seconds) {
+    std::snprintf(reason, sizeof reason, "skipped: about %.0f s predicted from n=%d, over --max_run_seconds=%g",
+                  predicted_seconds, previous_n, settings().max_run_seconds);
+  } else if (predicted_mib > 0.8 * available_mib) {
+    std::snprintf(reason, sizeof reason, "skipped: about %.0f MiB predicted from n=%d, %.0f MiB available",
+                  predicted_mib, previous_n, available_mib);
+  }
+  return reason;
+}
+
+// Runs `algorithm` on `input` at the benchmark's n: skip check and peak memory in a child
+// process (first call for this n only), then the timed iterations; a Delaunay run becomes
+// the floor of its input and n. Returns the mean CPU seconds per iteration, or nothing if
+// the run was skipped.
+template <typename Reconstruct>
+std::optional<double> time_run(benchmark::State& state, const std::string& algorithm, const std::string& input,
+                               Reconstruct&& reconstruct) {
   const int n = static_cast<int>(state.range(0));
-  const auto& points = cached_points(n);
+  auto& sizes = runs()[{algorithm, input}];
+  if (!sizes.contains(n)) {
+    Run first;
+    first.skip_reason = reason_to_skip(sizes, n);
+    if (first.skip_reason.empty()) {
+      first.memory = measure_peak_memory_in_child(algorithm, input, n);
+      first.skip_reason = first.memory.failure;
+    }
+    sizes[n] = first;
+  }
+  Run& run = sizes[n];
+  if (!run.skip_reason.empty()) {
+    state.SkipWithError(run.skip_reason.c_str());
+    return std::nullopt;
+  }
+  const auto& points = current_points(input, n);
   double total = 0.0;
   for (auto _ : state) {
     const double start = thread_cpu_seconds();
-    benchmark::DoNotOptimize(bare_delaunay_vertex_count(points));
+    reconstruct(points);
     const double seconds = thread_cpu_seconds() - start;
     state.SetIterationTime(seconds);
     total += seconds;
   }
-  delaunay_seconds()[n] = total / static_cast<double>(state.iterations());
-  report(state, n, total);
+  run.seconds = total / static_cast<double>(state.iterations());
+  if (algorithm == "delaunay") delaunay_seconds()[{input, n}] = run.seconds;
+  state.counters["ns_per_point"] = 1e9 * run.seconds / n;
+  state.counters["peak_MiB"] = run.memory.peak_mib;
+  state.counters["input_MiB"] = run.memory.input_mib;
+  const auto floor = delaunay_seconds().find({input, n});
+  if (floor != delaunay_seconds().end()) state.counters["x_delaunay"] = run.seconds / floor->second;
+  return run.seconds;
 }
 
-void BM_Algorithm(benchmark::State& state, const Algorithm* algorithm) {
-  const int n = static_cast<int>(state.range(0));
-  const auto& points = cached_points(n);
+void BM_Delaunay(benchmark::State& state, std::string input) {
+  time_run(state, "delaunay", input, [](const std::vector<Point2>& points) {
+    benchmark::DoNotOptimize(bare_delaunay_vertex_count(points));
+  });
+}
+
+void BM_Algorithm(benchmark::State& state, const Algorithm* algorithm, std::string input) {
   const Parameters params = resolve_parameters(algorithm->parameters(), {}, algorithm->name());
-  double total = 0.0, after_delaunay_ms = 0.0;
-  for (auto _ : state) {
-    const double start = thread_cpu_seconds();
+  double after_delaunay_share_sum = 0.0;
+  int phased_iterations = 0;
+  const auto mean = time_run(state, algorithm->name(), input, [&](const std::vector<Point2>& points) {
     auto result = algorithm->reconstruct(points, params);
     benchmark::DoNotOptimize(result);
-    const double seconds = thread_cpu_seconds() - start;
-    state.SetIterationTime(seconds);
-    total += seconds;
     const auto& phases = result.timing_ms;
-    if (phases.size() >= 2 && phases.front().first == "delaunay") after_delaunay_ms += phases.back().second - phases.front().second;
+    if (phases.size() >= 2 && phases.front().first == "delaunay" && phases.back().second > 0) {
+      after_delaunay_share_sum += 1.0 - phases.front().second / phases.back().second;
+      ++phased_iterations;
+    }
+  });
+  if (mean && phased_iterations > 0) {
+    const int n = static_cast<int>(state.range(0));
+    state.counters["after_delaunay_ns_per_point"] = 1e9 * *mean * after_delaunay_share_sum / phased_iterations / n;
   }
-  report(state, n, total);
-  if (after_delaunay_ms > 0) state.counters["after_delaunay_ns_per_point"] = 1e6 * after_delaunay_ms / static_cast<double>(state.iterations()) / n;
 }
 
 void apply_sizes(benchmark::internal::Benchmark* b) {
-  for (int n : {10'000, 100'000, 1'000'000}) b->Arg(n);
-  b->UseManualTime()->Unit(benchmark::kMillisecond)->MinTime(0.5);
+  for (long long n = 1'000; n <= settings().max_n; n *= 10) b->Arg(n);
+  b->ArgName("n")->UseManualTime()->Unit(benchmark::kMillisecond);
+}
+
+// Removes "--name=value" from argv and returns the value, if present.
+std::optional<std::string> take_flag(int& argc, char** argv, const std::string& name) {
+  const std::string prefix = "--" + name + "=";
+  for (int i = 1; i < argc; ++i) {
+    if (std::string(argv[i]).rfind(prefix, 0) == 0) {
+      std::string value = argv[i] + prefix.size();
+      std::copy(argv + i + 1, argv + argc, argv + i);
+      --argc;
+      return value;
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -117,10 +318,18 @@ void apply_sizes(benchmark::internal::Benchmark* b) {
 
 int main(int argc, char** argv) {
   using namespace curvebench;
+  if (const auto run = take_flag(argc, argv, "peak_memory_child")) return run_peak_memory_child(*run);
+  if (const auto value = take_flag(argc, argv, "max_n")) settings().max_n = std::stoll(*value);
+  if (const auto value = take_flag(argc, argv, "max_run_seconds")) settings().max_run_seconds = std::stod(*value);
   // Delaunay first at every n, so each algorithm's ratio uses this run's floor.
-  apply_sizes(benchmark::RegisterBenchmark("delaunay", BM_Delaunay));
+  for (const auto& input : kInputs) {
+    apply_sizes(benchmark::RegisterBenchmark(("delaunay/" + input).c_str(), BM_Delaunay, input));
+  }
   for (const auto& algorithm : all_algorithms()) {
-    apply_sizes(benchmark::RegisterBenchmark(algorithm->name().c_str(), BM_Algorithm, algorithm.get()));
+    for (const auto& input : kInputs) {
+      apply_sizes(benchmark::RegisterBenchmark((algorithm->name() + "/" + input).c_str(), BM_Algorithm,
+                                               algorithm.get(), input));
+    }
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

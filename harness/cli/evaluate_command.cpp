@@ -9,6 +9,7 @@
 #include "io/points_file.h"
 #include "io/reconstruction_json.h"
 #include "metrics/evaluate_reconstruction.h"
+#include "metrics/oracle_l2_error.h"
 
 namespace curvebench {
 namespace {
@@ -43,7 +44,9 @@ void run(const EvaluateOptions& options) {
   }
   const std::vector<Point2> points = read_points_file(points_path);
   ReconstructionMetrics metrics;
+  double oracle = 0.0;
   try {
+    oracle = oracle_l2_error(truth, points);
     metrics = evaluate_reconstruction(truth, points, reconstruction);
   } catch (const std::exception& e) {
     throw std::runtime_error(options.result + " against " + options.truth + ": " + e.what());
@@ -53,6 +56,7 @@ void run(const EvaluateOptions& options) {
   json["result"] = options.result;
   json["points"] = points_path;
   json["algorithm"] = result_json.value("algorithm", "");
+  json["oracle_l2_error"] = oracle;
   json["metrics"] = metrics_to_json(metrics);
   const std::string text = json.dump(2) + "\n";
   std::cout << text;

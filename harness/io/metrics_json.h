@@ -2,7 +2,7 @@
 // and what each sweep row holds under "metrics". Keys of an output the reconstruction lacks
 // are absent; a value that is undefined for it (an infinite distance) is null.
 //
-// {"true_curves": 1, "oracle_l2_error": 0.004,
+// {"true_curves": 1,
 //  "l2_error": 0.006, "hausdorff": 0.01, "manifold": true, "components": 1,
 //  "closed_components": 1, "dangling_vertices": 0, "branching_vertices": 0,
 //  "exact": true, "edge_precision": 1.0, "edge_recall": 1.0,          // interpolating only

@@ -9,21 +9,13 @@
 #include "metrics/hausdorff_distance.h"
 #include "metrics/l2_error.h"
 #include "metrics/segments.h"
+#include "metrics/true_curve_segments.h"
 
 namespace curvebench {
 namespace {
 
 // Hausdorff distances are exact to this fraction of the diagonal (hausdorff_distance.h).
 constexpr double kHausdorffToleranceOverDiagonal = 1e-4;
-
-std::vector<Segment2> true_curve_segments(const GroundTruth& truth) {
-  std::vector<Segment2> segments;
-  for (const auto& curve : truth.curves) {
-    const auto closed = closed_polyline_segments(curve.vertices);
-    segments.insert(segments.end(), closed.begin(), closed.end());
-  }
-  return segments;
-}
 
 double bounding_box_diagonal(const GroundTruth& truth) {
   double min_x = INFINITY, min_y = INFINITY, max_x = -INFINITY, max_y = -INFINITY;
@@ -61,7 +53,6 @@ ReconstructionMetrics evaluate_reconstruction(const GroundTruth& truth, std::spa
 
   ReconstructionMetrics metrics;
   metrics.true_curves = static_cast<int>(truth.curves.size());
-  metrics.oracle_l2_error = l2_error(true_curves, edge_segments(points, truth.edges));
 
   if (reconstruction.curve_edges) {
     const std::vector<Edge>& edges = *reconstruction.curve_edges;

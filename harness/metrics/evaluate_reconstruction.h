@@ -3,10 +3,8 @@
 // In:  the ground truth, the input points it describes (file order, one per truth sample)
 //      and a reconstruction of those points.
 // Out: the metrics of each output the reconstruction has; those of an output it lacks stay
-//      absent. The oracle L2 error needs only the truth and is always there.
+//      absent. (The oracle L2 error, which needs no reconstruction, is in oracle_l2_error.h.)
 //   curve          l2_error        even-odd region of the edges vs the true region (l2_error.h)
-//                  oracle_l2_error the same for the polygons joining the samples in true order
-//                                  (the true adjacency), i.e. the error the sampling itself causes
 //                  hausdorff       Hausdorff distance between the true dense curves and the
 //                                  edges, over the true curves' bounding-box diagonal, exact to
 //                                  10^-4 of the diagonal (hausdorff_distance.h); infinite when
@@ -37,7 +35,6 @@ namespace curvebench {
 
 struct ReconstructionMetrics {
   int true_curves = 0;
-  double oracle_l2_error = 0.0;
   std::optional<double> l2_error;
   std::optional<double> hausdorff;  // over the diagonal; may be infinite
   std::optional<CurveTopology> topology;

@@ -8,6 +8,7 @@
 
 #include "io/metrics_json.h"
 #include "metrics/evaluate_reconstruction.h"
+#include "metrics/oracle_l2_error.h"
 
 namespace curvebench {
 namespace {
@@ -38,7 +39,7 @@ TEST(EvaluateReconstruction, TheTrueAdjacencyScoresPerfectly) {
   perfect.dominant_points = std::vector<int>{0, 2, 4, 6};
   const ReconstructionMetrics m = evaluate_reconstruction(unit_square_truth(), kSamples, perfect);
   EXPECT_EQ(m.true_curves, 1);
-  EXPECT_DOUBLE_EQ(m.oracle_l2_error, 0.0);
+  EXPECT_DOUBLE_EQ(oracle_l2_error(unit_square_truth(), kSamples), 0.0);
   EXPECT_DOUBLE_EQ(*m.l2_error, 0.0);
   EXPECT_DOUBLE_EQ(*m.hausdorff, 0.0);
   EXPECT_TRUE(m.topology->manifold);
@@ -80,20 +81,18 @@ TEST(EvaluateReconstruction, ANonInterpolatingCurveUsesItsOwnVertices) {
   EXPECT_FALSE(m.edges.has_value());  // its edges do not join samples
 }
 
-TEST(EvaluateReconstruction, OracleErrorMeasuresTheSamplingItself) {
-  // Only the four corners of a circle-free shape: a triangle-sampled square loses nothing,
-  // but a truth whose samples skip a corner does. Drop the sample at (1, 1) from the cycle.
+TEST(OracleL2Error, MeasuresTheSamplingItself) {
+  // A truth whose samples skip the corner (1, 1): joining them in true order cuts off the
+  // triangle (1, 0.5), (1, 1), (0.5, 1) of area 1/8.
   GroundTruth truth = unit_square_truth();
   truth.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 5}, {5, 6}, {6, 7}, {0, 7}};
-  const ReconstructionMetrics m = evaluate_reconstruction(truth, kSamples, Reconstruction{});
-  // The cut-off corner triangle (1, 0.5), (1, 1), (0.5, 1) has area 1/8.
-  EXPECT_DOUBLE_EQ(m.oracle_l2_error, 0.125);
-  EXPECT_FALSE(m.l2_error.has_value());
+  EXPECT_DOUBLE_EQ(oracle_l2_error(truth, kSamples), 0.125);
 }
 
 TEST(EvaluateReconstruction, MismatchedPointsAreRejected) {
   const std::vector<Point2> too_few(kSamples.begin(), kSamples.begin() + 7);
   EXPECT_THROW(evaluate_reconstruction(unit_square_truth(), too_few, Reconstruction{}), std::invalid_argument);
+  EXPECT_THROW(oracle_l2_error(unit_square_truth(), too_few), std::invalid_argument);
   Reconstruction bad;
   bad.curve_edges = std::vector<Edge>{{0, 8}};
   EXPECT_THROW(evaluate_reconstruction(unit_square_truth(), kSamples, bad), std::out_of_range);

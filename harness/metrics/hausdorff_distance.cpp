@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <queue>
 #include <stdexcept>
 #include <vector>
 
@@ -99,28 +100,29 @@ class SegmentGrid {
   std::vector<std::vector<int>> cells_;
 };
 
+// Best-first branch and bound over pieces of the segments of `from`, most promising first.
 double directed_distance(std::span<const Segment2> from, const SegmentGrid& to, double tolerance) {
   struct Piece {
     Point2 source, target;
     double source_distance, target_distance;
+    double bound() const { return 0.5 * (source_distance + target_distance + distance(source, target)); }
+    bool operator<(const Piece& other) const { return bound() < other.bound(); }
   };
-  std::vector<Piece> pieces;
-  pieces.reserve(from.size());
+  std::priority_queue<Piece> pieces;
   double farthest = 0.0;
   for (const Segment2& s : from) {
-    pieces.push_back({s.source, s.target, to.distance_to_nearest(s.source), to.distance_to_nearest(s.target)});
-    farthest = std::max({farthest, pieces.back().source_distance, pieces.back().target_distance});
+    const Piece piece{s.source, s.target, to.distance_to_nearest(s.source), to.distance_to_nearest(s.target)};
+    farthest = std::max({farthest, piece.source_distance, piece.target_distance});
+    if (piece.bound() > farthest + tolerance) pieces.push(piece);
   }
-  while (!pieces.empty()) {
-    const Piece piece = pieces.back();
-    pieces.pop_back();
-    const double bound = 0.5 * (piece.source_distance + piece.target_distance + distance(piece.source, piece.target));
-    if (bound <= farthest + tolerance) continue;
+  while (!pieces.empty() && pieces.top().bound() > farthest + tolerance) {
+    const Piece piece = pieces.top();
+    pieces.pop();
     const Point2 middle = 0.5 * (piece.source + piece.target);
     const double middle_distance = to.distance_to_nearest(middle);
     farthest = std::max(farthest, middle_distance);
-    pieces.push_back({piece.source, middle, piece.source_distance, middle_distance});
-    pieces.push_back({middle, piece.target, middle_distance, piece.target_distance});
+    pieces.push({piece.source, middle, piece.source_distance, middle_distance});
+    pieces.push({middle, piece.target, middle_distance, piece.target_distance});
   }
   return farthest;
 }

@@ -43,10 +43,11 @@ NearestPointTree::NearestPointTree(std::span<const Point2> points) : points_(poi
   }
 }
 
-int NearestPointTree::nearest(Point2 query) const {
-  if (order_.empty()) return -1;
-  int best = -1;
-  double best_d2 = std::numeric_limits<double>::infinity();
+int NearestPointTree::nearest(Point2 query) const { return order_.empty() ? -1 : nearest(query, order_[0]); }
+
+int NearestPointTree::nearest(Point2 query, int hint) const {
+  int best = hint;
+  double best_d2 = dot(points_[hint] - query, points_[hint] - query);
   // Depth-first with a stack of ranges, nearer side first, skipping boxes farther than the best.
   struct Range { int begin, end, axis; };
   Range stack[128];

@@ -18,6 +18,9 @@ class NearestPointTree {
  public:
   explicit NearestPointTree(std::span<const Point2> points);
   int nearest(Point2 query) const;
+  // The same, searching only closer than the point `hint` (any index): a good hint, such as
+  // the answer for a nearby query, prunes most of the tree.
+  int nearest(Point2 query, int hint) const;
 
  private:
   // A node of the implicit balanced tree covers order_[begin, end), is stored at its middle

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <utility>
 
 namespace curvebench {
@@ -62,37 +63,43 @@ std::string find_polyline_crossing(const std::vector<std::vector<Point2>>& polyl
   }
   if (segments.empty()) return "";
 
-  // Bucket edges by the grid cells their bounding boxes cover; test a pair only in the cell
-  // holding the lower-left corner of the overlap of their boxes, so each pair is tested once.
-  const int side = std::max(1, static_cast<int>(std::sqrt(static_cast<double>(segments.size()))));
-  const double cell = std::max({max_x - min_x, max_y - min_y, 1e-300}) / side;
-  auto cell_of = [&](double v, double origin) { return std::clamp(static_cast<int>((v - origin) / cell), 0, side - 1); };
-  std::vector<std::vector<int>> buckets(static_cast<size_t>(side) * side);
+  // Bucket edges by the grid cells their bounding boxes cover, with cells about twice the
+  // mean edge length (so a cell holds a few edges) but at least 1/64 of the longest edge;
+  // the occupied cells are found by sorting (cell, edge) pairs. A pair is tested only in the
+  // cell holding the lower-left corner of the overlap of their boxes, so once.
+  double total_length = 0.0, longest = 0.0;
+  for (const auto& seg : segments) {
+    const double length = std::hypot(seg.max_x - seg.min_x, seg.max_y - seg.min_y);
+    total_length += length, longest = std::max(longest, length);
+  }
+  const double cell = std::max({2.0 * total_length / segments.size(), longest / 64, (max_x - min_x + max_y - min_y) * 1e-9, 1e-300});
+  auto cell_of = [&](double v, double origin) { return static_cast<std::int64_t>((v - origin) / cell); };
+  auto key_of = [](std::int64_t gx, std::int64_t gy) { return (gx << 32) | gy; };
+  std::vector<std::pair<std::int64_t, int>> entries;
   for (int s = 0; s < static_cast<int>(segments.size()); ++s) {
     const auto& seg = segments[s];
-    for (int gx = cell_of(seg.min_x, min_x); gx <= cell_of(seg.max_x, min_x); ++gx) {
-      for (int gy = cell_of(seg.min_y, min_y); gy <= cell_of(seg.max_y, min_y); ++gy) buckets[gx * side + gy].push_back(s);
+    for (std::int64_t gx = cell_of(seg.min_x, min_x); gx <= cell_of(seg.max_x, min_x); ++gx) {
+      for (std::int64_t gy = cell_of(seg.min_y, min_y); gy <= cell_of(seg.max_y, min_y); ++gy) entries.emplace_back(key_of(gx, gy), s);
     }
   }
+  std::sort(entries.begin(), entries.end());
   auto adjacent = [&](const Segment& s, const Segment& t) {
     if (s.curve != t.curve) return false;
     const int n = static_cast<int>(polylines[s.curve].size());
     return (s.edge + 1) % n == t.edge || (t.edge + 1) % n == s.edge;
   };
-  for (int gx = 0; gx < side; ++gx) {
-    for (int gy = 0; gy < side; ++gy) {
-      const auto& bucket = buckets[gx * side + gy];
-      for (size_t i = 0; i < bucket.size(); ++i) {
-        for (size_t j = i + 1; j < bucket.size(); ++j) {
-          const Segment& s = segments[bucket[i]];
-          const Segment& t = segments[bucket[j]];
-          const double ox = std::max(s.min_x, t.min_x), oy = std::max(s.min_y, t.min_y);
-          if (ox > std::min(s.max_x, t.max_x) || oy > std::min(s.max_y, t.max_y)) continue;
-          if (cell_of(ox, min_x) != gx || cell_of(oy, min_y) != gy) continue;
-          if (adjacent(s, t) || !segments_meet(s, t)) continue;
-          return "curve " + std::to_string(s.curve) + " edge " + std::to_string(s.edge) + " meets curve " +
-                 std::to_string(t.curve) + " edge " + std::to_string(t.edge);
-        }
+  for (size_t begin = 0, end = 0; begin < entries.size(); begin = end) {
+    while (end < entries.size() && entries[end].first == entries[begin].first) ++end;
+    for (size_t i = begin; i < end; ++i) {
+      for (size_t j = i + 1; j < end; ++j) {
+        const Segment& s = segments[entries[i].second];
+        const Segment& t = segments[entries[j].second];
+        const double ox = std::max(s.min_x, t.min_x), oy = std::max(s.min_y, t.min_y);
+        if (ox > std::min(s.max_x, t.max_x) || oy > std::min(s.max_y, t.max_y)) continue;
+        if (key_of(cell_of(ox, min_x), cell_of(oy, min_y)) != entries[begin].first) continue;
+        if (adjacent(s, t) || !segments_meet(s, t)) continue;
+        return "curve " + std::to_string(s.curve) + " edge " + std::to_string(s.edge) + " meets curve " +
+               std::to_string(t.curve) + " edge " + std::to_string(t.edge);
       }
     }
   }

@@ -20,7 +20,10 @@ class ArcLength {
  public:
   explicit ArcLength(const DenseCurve& curve) : curve_(curve), start_(curve.points.size() + 1, 0.0) {
     const size_t n = curve.points.size();
-    for (size_t i = 0; i < n; ++i) start_[i + 1] = start_[i] + distance(curve.points[i], curve.points[(i + 1) % n]);
+    for (size_t i = 0; i < n; ++i) {
+      const Point2 d = curve.points[(i + 1) % n] - curve.points[i];
+      start_[i + 1] = start_[i] + std::sqrt(dot(d, d));
+    }
   }
 
   double total() const { return start_.back(); }
@@ -78,40 +81,47 @@ class EpsilonWalk {
   bool covered_between(double a, double b) const {
     const Point2 pa = arc_.point_at(a), pb = arc_.point_at(b);
     for (int j = arc_.vertex_after(a); arc_.vertex_position(j) < b; ++j) {
-      const double reach = epsilon_ * arc_.vertex_lfs(j);
-      if (distance(arc_.vertex(j), pa) > reach && distance(arc_.vertex(j), pb) > reach) return false;
+      if (!covers(pa, j) && !covers(pb, j)) return false;
     }
     return true;
   }
 
   // The largest b in (a, limit] such that the samples at a and b cover every vertex between
   // them: candidates advance vertex by vertex, keeping the vertices that a does not cover,
-  // and the first failing candidate is bisected against the last good one. A step always
-  // reaches at least the next vertex (nothing lies strictly between).
+  // and the first failing candidate is bisected against the last good one (both on the edge
+  // into that vertex). A step always reaches at least the next vertex (nothing lies between).
   double largest_step_end(double a, double limit) {
     const Point2 pa = arc_.point_at(a);
     not_covered_by_a_.clear();
     double good = a;
     for (int j = arc_.vertex_after(a);; ++j) {
       const double candidate = std::min(arc_.vertex_position(j), limit);
-      if (!covers_rest(arc_.point_at(candidate))) {
+      const double edge_start = arc_.vertex_position(j - 1), edge_length = arc_.vertex_position(j) - edge_start;
+      const Point2 from = arc_.vertex(j - 1 + arc_.vertex_count()), edge = arc_.vertex(j) - from;
+      auto on_edge = [&](double u) { return from + ((u - edge_start) / edge_length) * edge; };
+      if (!covers_rest(on_edge(candidate))) {
         double bad = candidate;
-        for (int iteration = 0; iteration < 50; ++iteration) {
+        for (int iteration = 0; iteration < 24; ++iteration) {  // to 1e-7 of the edge
           const double middle = 0.5 * (good + bad);
-          (covers_rest(arc_.point_at(middle)) ? good : bad) = middle;
+          (covers_rest(on_edge(middle)) ? good : bad) = middle;
         }
         return good;
       }
       if (candidate >= limit) return limit;
       good = candidate;
-      if (distance(arc_.vertex(j), pa) > epsilon_ * arc_.vertex_lfs(j)) not_covered_by_a_.push_back(j);
+      if (!covers(pa, j)) not_covered_by_a_.push_back(j);
     }
   }
 
  private:
+  // Squared distances: cheaper than hypot and correctly rounded everywhere.
+  bool covers(Point2 sample, int j) const {
+    const Point2 d = arc_.vertex(j) - sample;
+    const double reach = epsilon_ * arc_.vertex_lfs(j);
+    return dot(d, d) <= reach * reach;
+  }
   bool covers_rest(Point2 b) const {
-    return std::all_of(not_covered_by_a_.begin(), not_covered_by_a_.end(),
-                       [&](int j) { return distance(arc_.vertex(j), b) <= epsilon_ * arc_.vertex_lfs(j); });
+    return std::all_of(not_covered_by_a_.begin(), not_covered_by_a_.end(), [&](int j) { return covers(b, j); });
   }
 
   const ArcLength& arc_;

@@ -10,5 +10,6 @@ void add_list_command(CLI::App& app);
 void add_reconstruct_command(CLI::App& app);
 void add_generate_command(CLI::App& app);
 void add_evaluate_command(CLI::App& app);
+void add_sweep_command(CLI::App& app);
 
 }  // namespace curvebench

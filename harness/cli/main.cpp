@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   curvebench::add_reconstruct_command(app);
   curvebench::add_generate_command(app);
   curvebench::add_evaluate_command(app);
+  curvebench::add_sweep_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,301 @@
+#include "sweep/run_sweep.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include "io/ground_truth_json.h"
+#include "io/metrics_json.h"
+#include "io/points_file.h"
+#include "metrics/evaluate_reconstruction.h"
+#include "metrics/oracle_l2_error.h"
+#include "sweep/run_in_child_processes.h"
+
+namespace curvebench {
+namespace {
+
+using Json = nlohmann::ordered_json;
+using Clock = std::chrono::steady_clock;
+
+double milliseconds_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+std::string run_key(const std::string& algorithm, const Json& parameters, const Json& input) {
+  return Json{{"algorithm", algorithm}, {"parameters", parameters}, {"input", input}}.dump();
+}
+
+// The keys of the rows already in `path`; a partial last line (an interrupted write) is cut.
+std::set<std::string> keys_of_existing_rows(const std::string& path) {
+  std::set<std::string> keys;
+  if (!std::filesystem::exists(path)) return keys;
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string text = buffer.str();
+  in.close();
+  const size_t complete = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+  if (complete < text.size()) std::filesystem::resize_file(path, complete);
+  std::istringstream lines(text.substr(0, complete));
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.empty()) continue;
+    const Json row = Json::parse(line, nullptr, false);
+    if (row.is_discarded() || !row.contains("algorithm") || !row.contains("parameters") || !row.contains("input")) {
+      throw std::runtime_error(path + ": a line is not a sweep row; not resuming into it");
+    }
+    keys.insert(run_key(row["algorithm"].get<std::string>(), row["parameters"], row["input"]));
+  }
+  return keys;
+}
+
+std::string settings_hash(const Json& settings) {
+  std::uint64_t hash = 14695981039346656037ull;  // FNV-1a
+  for (const unsigned char c : settings.dump()) hash = (hash ^ c) * 1099511628211ull;
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+  return hex;
+}
+
+struct PreparedInput {
+  std::string points_path;
+  std::string truth_path;
+  bool ready = false;
+  std::string failure;     // why it could not be generated
+  int points = 0;
+  double oracle_l2_error = 0;
+};
+
+// Progress and an estimate of the time left, on stderr: rewritten in place on a terminal,
+// otherwise a line every few seconds.
+class ProgressReport {
+ public:
+  ProgressReport(std::string what, int total, bool enabled)
+      : what_(std::move(what)), total_(total), enabled_(enabled && total > 0), terminal_(::isatty(2)) {}
+
+  void advance(const std::string& tally) {
+    ++done_;
+    if (!enabled_) return;
+    const double elapsed = milliseconds_since(start_) / 1000.0;
+    if (!terminal_ && done_ < total_ && elapsed < last_print_ + 5.0) return;
+    last_print_ = elapsed;
+    const double left = elapsed / done_ * (total_ - done_);
+    std::cerr << (terminal_ ? "\r" : "") << what_ << " " << done_ << "/" << total_ << " (" << 100 * done_ / total_ << "%), "
+              << duration(elapsed) << " elapsed, about " << duration(left) << " left" << (tally.empty() ? "" : "; " + tally)
+              << (terminal_ ? "\033[K" : "\n");
+    if (terminal_ && done_ == total_) std::cerr << "\n";
+    std::cerr.flush();
+  }
+
+ private:
+  static std::string duration(double seconds) {
+    const long s = static_cast<long>(seconds + 0.5);
+    return s >= 60 ? std::to_string(s / 60) + " min " + std::to_string(s % 60) + " s" : std::to_string(s) + " s";
+  }
+  std::string what_;
+  int total_;
+  bool enabled_;
+  bool terminal_;
+  int done_ = 0;
+  double last_print_ = 0;
+  Clock::time_point start_ = Clock::now();
+};
+
+std::vector<PreparedInput> prepare_inputs(const SweepPlan& plan, const std::set<int>& needed, const SweepOptions& options,
+                                          const SweepEnvironment& environment, double timeout) {
+  std::filesystem::create_directories(options.inputs_directory);
+  std::vector<PreparedInput> prepared(plan.inputs.size());
+  const std::vector<int> order(needed.begin(), needed.end());
+  for (int input : order) {
+    const std::string stem = (std::filesystem::path(options.inputs_directory) / settings_hash(plan.inputs[input])).string();
+    prepared[input].points_path = stem + ".xy";
+    prepared[input].truth_path = stem + ".truth.json";
+  }
+  ProgressReport progress("inputs", static_cast<int>(order.size()), options.show_progress);
+  run_in_child_processes(
+      static_cast<int>(order.size()), options.parallel_jobs, timeout,
+      [&](int task) {
+        const PreparedInput& input = prepared[order[task]];
+        try {
+          environment.generate_input(plan.inputs[order[task]], input.points_path, input.truth_path);
+          const std::vector<Point2> points = read_points_file(input.points_path);
+          const GroundTruth truth = read_ground_truth_file(input.truth_path);
+          return Json{{"points", points.size()}, {"oracle_l2_error", oracle_l2_error(truth, points)}}.dump();
+        } catch (const std::exception& e) {
+          return Json{{"failure", e.what()}}.dump();
+        }
+      },
+      [&](int task, const ChildOutcome& outcome) {
+        PreparedInput& input = prepared[order[task]];
+        const Json summary = outcome.ending == ChildOutcome::Ending::kFinished ? Json::parse(outcome.output) : Json::object();
+        if (summary.contains("failure")) {
+          input.failure = "input generation failed: " + summary["failure"].get<std::string>();
+        } else if (outcome.ending == ChildOutcome::Ending::kFinished) {
+          input.ready = true;
+          input.points = summary["points"].get<int>();
+          input.oracle_l2_error = summary["oracle_l2_error"].get<double>();
+        } else if (outcome.ending == ChildOutcome::Ending::kTimedOut) {
+          input.failure = "input generation took longer than the timeout";
+        } else {
+          input.failure = "input generation crashed: " + outcome.failure;
+        }
+        progress.advance("");
+      });
+  return prepared;
+}
+
+// The fields of a row that only depend on the plan and the input.
+Json row_header(const SweepPlan& plan, const SweepRun& run, const PreparedInput& input) {
+  Json row;
+  row["algorithm"] = run.algorithm;
+  row["parameters"] = run.parameters;
+  row["input"] = plan.inputs[run.input];
+  if (input.ready) {
+    row["input_points"] = input.points;
+    row["oracle_l2_error"] = input.oracle_l2_error;
+  }
+  return row;
+}
+
+// In the child: reconstruct, evaluate, and return the row so far.
+std::string perform_run(const SweepPlan& plan, const SweepRun& run, const PreparedInput& input, const Algorithm& algorithm) {
+  Json row = row_header(plan, run, input);
+  const std::vector<Point2> points = read_points_file(input.points_path);
+  const GroundTruth truth = read_ground_truth_file(input.truth_path);
+  Parameters parameters;
+  for (const auto& [name, value] : run.parameters.items()) parameters[name] = value.get<double>();
+  Reconstruction result;
+  try {
+    result = algorithm.reconstruct(points, parameters);
+  } catch (const std::exception& e) {
+    row["status"] = "error";
+    row["message"] = e.what();
+    return row.dump();
+  }
+  ReconstructionMetrics metrics;
+  const Clock::time_point evaluation = Clock::now();
+  try {
+    metrics = evaluate_reconstruction(truth, points, result);
+  } catch (const std::exception& e) {
+    row["status"] = "error";
+    row["message"] = std::string("evaluation failed: ") + e.what();
+    return row.dump();
+  }
+  const double evaluate_ms = milliseconds_since(evaluation);
+  row["status"] = "ok";
+  row["metrics"] = metrics_to_json(metrics);
+  row["timing_ms"] = Json::object();
+  for (const auto& [phase, ms] : result.timing_ms) row["timing_ms"][phase] = ms;
+  row["evaluate_ms"] = evaluate_ms;
+  return row.dump();
+}
+
+const Algorithm& find_in(const SweepEnvironment& environment, const std::string& name) {
+  for (const Algorithm* algorithm : environment.algorithms) {
+    if (algorithm->name() == name) return *algorithm;
+  }
+  throw std::runtime_error("sweep: unknown algorithm '" + name + "'");
+}
+
+}  // namespace
+
+SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& options, const SweepEnvironment& environment) {
+  const Clock::time_point start = Clock::now();
+  if (options.shard_count < 1 || options.shard_index < 0 || options.shard_index >= options.shard_count) {
+    throw std::runtime_error("sweep: shard " + std::to_string(options.shard_index) + "/" + std::to_string(options.shard_count) +
+                             " is not i/n with 0 <= i < n");
+  }
+  if (!options.resume && std::filesystem::exists(options.results_path) && std::filesystem::file_size(options.results_path) > 0) {
+    throw std::runtime_error(options.results_path + " already holds results; pass --resume to add the missing runs, or remove it");
+  }
+  const std::set<std::string> done = options.resume ? keys_of_existing_rows(options.results_path) : std::set<std::string>{};
+  const double timeout = options.timeout_seconds > 0 ? options.timeout_seconds : plan.timeout_seconds;
+
+  SweepSummary summary;
+  std::vector<int> selected;  // plan run indices, in plan order
+  for (int r = options.shard_index; r < static_cast<int>(plan.runs.size()); r += options.shard_count) {
+    ++summary.planned_runs;
+    const SweepRun& run = plan.runs[r];
+    if (done.contains(run_key(run.algorithm, run.parameters, plan.inputs[run.input]))) {
+      ++summary.skipped_runs;
+    } else {
+      selected.push_back(r);
+    }
+  }
+  std::set<int> needed_inputs;
+  for (int r : selected) needed_inputs.insert(plan.runs[r].input);
+  const std::vector<PreparedInput> inputs = prepare_inputs(plan, needed_inputs, options, environment, timeout);
+
+  std::ofstream out(options.results_path, std::ios::binary | std::ios::app);
+  if (!out) throw std::runtime_error(options.results_path + ": cannot open for appending");
+  // Rows are written in plan order: finished rows wait here until those before them are in.
+  std::map<size_t, std::string> waiting_rows;
+  size_t next_to_write = 0;
+  auto finish_row = [&](size_t position, Json row) {
+    const std::string status = row["status"].get<std::string>();
+    (status == "ok" ? summary.ok : status == "error" ? summary.errors : status == "timeout" ? summary.timeouts : summary.crashes) += 1;
+    waiting_rows[position] = row.dump();
+    for (auto it = waiting_rows.begin(); it != waiting_rows.end() && it->first == next_to_write; it = waiting_rows.erase(it)) {
+      out << it->second << '\n';
+      ++next_to_write;
+      ++summary.written_rows;
+    }
+    out.flush();
+    if (!out) throw std::runtime_error(options.results_path + ": write error");
+  };
+
+  std::vector<size_t> child_positions;  // positions in `selected` that need a child process
+  for (size_t position = 0; position < selected.size(); ++position) {
+    const SweepRun& run = plan.runs[selected[position]];
+    const PreparedInput& input = inputs[run.input];
+    if (input.ready) {
+      child_positions.push_back(position);
+    } else {
+      Json row = row_header(plan, run, input);
+      row["status"] = "error";
+      row["message"] = input.failure;
+      finish_row(position, std::move(row));
+    }
+  }
+
+  ProgressReport progress("runs", static_cast<int>(child_positions.size()), options.show_progress);
+  run_in_child_processes(
+      static_cast<int>(child_positions.size()), options.parallel_jobs, timeout,
+      [&](int task) {
+        const SweepRun& run = plan.runs[selected[child_positions[task]]];
+        return perform_run(plan, run, inputs[run.input], find_in(environment, run.algorithm));
+      },
+      [&](int task, const ChildOutcome& outcome) {
+        const size_t position = child_positions[task];
+        const SweepRun& run = plan.runs[selected[position]];
+        Json row;
+        if (outcome.ending == ChildOutcome::Ending::kFinished) {
+          row = Json::parse(outcome.output);
+        } else {
+          row = row_header(plan, run, inputs[run.input]);
+          const bool timed_out = outcome.ending == ChildOutcome::Ending::kTimedOut;
+          row["status"] = timed_out ? "timeout" : "crash";
+          std::ostringstream timeout_text;
+          timeout_text << timeout;
+          row["message"] = timed_out ? "no result within " + timeout_text.str() + " s" : outcome.failure;
+        }
+        row["wall_ms"] = outcome.wall_seconds * 1000.0;
+        row["peak_memory_kb"] = outcome.peak_memory_kilobytes;
+        finish_row(position, std::move(row));
+        progress.advance(std::to_string(summary.errors) + " errors, " + std::to_string(summary.timeouts) + " timeouts, " +
+                         std::to_string(summary.crashes) + " crashes");
+      });
+  summary.seconds = milliseconds_since(start) / 1000.0;
+  return summary;
+}
+
+}  // namespace curvebench

@@ -1,0 +1,125 @@
+#include "sweep/sweep_plan.h"
+
+#include <stdexcept>
+
+namespace curvebench {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+[[noreturn]] void fail(const std::string& what) { throw std::runtime_error("sweep configuration: " + what); }
+
+// Every combination of the values of `grid`: arrays are axes, objects expand recursively.
+std::vector<Json> expand_grid(const Json& grid, const std::string& where) {
+  if (!grid.is_object()) fail(where + " must be an object");
+  std::vector<Json> combinations{Json::object()};
+  for (const auto& [key, value] : grid.items()) {
+    std::vector<Json> alternatives;
+    if (value.is_array()) {
+      if (value.empty()) fail(where + "." + key + " is an empty list");
+      for (const Json& v : value) {
+        if (v.is_object()) {
+          for (Json& expanded : expand_grid(v, where + "." + key)) alternatives.push_back(std::move(expanded));
+        } else {
+          alternatives.push_back(v);
+        }
+      }
+    } else if (value.is_object()) {
+      alternatives = expand_grid(value, where + "." + key);
+    } else {
+      alternatives.push_back(value);
+    }
+    std::vector<Json> next;
+    for (const Json& partial : combinations) {
+      for (const Json& alternative : alternatives) {
+        Json extended = partial;
+        extended[key] = alternative;
+        next.push_back(std::move(extended));
+      }
+    }
+    combinations = std::move(next);
+  }
+  return combinations;
+}
+
+const Algorithm& algorithm_named(std::span<const Algorithm* const> algorithms, const std::string& name) {
+  for (const Algorithm* algorithm : algorithms) {
+    if (algorithm->name() == name) return *algorithm;
+  }
+  fail("unknown algorithm '" + name + "'");
+}
+
+// (algorithm, resolved parameters) pairs in the order the configuration lists them.
+std::vector<std::pair<std::string, Json>> algorithm_settings(const Json& config, std::span<const Algorithm* const> algorithms) {
+  Json entries = config.contains("algorithms") ? config.at("algorithms") : Json("all");
+  if (entries == "all") {
+    entries = Json::array();
+    for (const Algorithm* algorithm : algorithms) entries.push_back(algorithm->name());
+  }
+  if (!entries.is_array() || entries.empty()) fail("\"algorithms\" must be \"all\" or a non-empty list");
+  std::vector<std::pair<std::string, Json>> settings;
+  for (const Json& entry : entries) {
+    const Json object = entry.is_string() ? Json{{"name", entry}} : entry;
+    if (!object.is_object() || !object.contains("name") || !object.at("name").is_string()) {
+      fail("each algorithm must be a name or {\"name\": ..., \"parameters\": {...}}");
+    }
+    const Algorithm& algorithm = algorithm_named(algorithms, object.at("name").get<std::string>());
+    const Json grid = object.contains("parameters") ? object.at("parameters") : Json::object();
+    for (const Json& given : expand_grid(grid, algorithm.name() + ".parameters")) {
+      Parameters values;
+      for (const auto& [name, value] : given.items()) {
+        if (!value.is_number()) fail(algorithm.name() + " parameter '" + name + "' must be a number");
+        values[name] = value.get<double>();
+      }
+      Parameters resolved;
+      try {
+        resolved = resolve_parameters(algorithm.parameters(), values, algorithm.name());
+      } catch (const InputError& e) {
+        fail(e.what());
+      }
+      Json parameters = Json::object();
+      for (const auto& [name, value] : resolved) parameters[name] = value;
+      settings.emplace_back(algorithm.name(), std::move(parameters));
+    }
+  }
+  return settings;
+}
+
+}  // namespace
+
+SweepPlan plan_sweep(const nlohmann::ordered_json& config, std::span<const Algorithm* const> algorithms) {
+  if (!config.is_object()) fail("must be a JSON object");
+  SweepPlan plan;
+  plan.description = config.value("description", "");
+  if (config.contains("timeout_seconds")) {
+    const Json& timeout = config.at("timeout_seconds");
+    if (!timeout.is_number() || timeout.get<double>() <= 0) fail("\"timeout_seconds\" must be a positive number");
+    plan.timeout_seconds = timeout.get<double>();
+  }
+  const Json seeds = config.contains("seeds") ? config.at("seeds") : Json::array({1});
+  if (!seeds.is_array() || seeds.empty()) fail("\"seeds\" must be a non-empty list of integers");
+  for (const Json& seed : seeds) {
+    if (!seed.is_number_integer() || seed.get<long long>() < 0) fail("\"seeds\" must be a non-empty list of integers >= 0");
+  }
+  if (!config.contains("inputs") || !config.at("inputs").is_array() || config.at("inputs").empty()) {
+    fail("\"inputs\" must be a non-empty list of generator settings");
+  }
+  const auto settings = algorithm_settings(config, algorithms);
+  for (size_t g = 0; g < config.at("inputs").size(); ++g) {
+    const Json& grid = config.at("inputs")[g];
+    if (grid.is_object() && grid.contains("seed")) fail("inputs[" + std::to_string(g) + "] sets \"seed\"; use the top-level \"seeds\"");
+    for (const Json& input : expand_grid(grid, "inputs[" + std::to_string(g) + "]")) {
+      for (const Json& seed : seeds) {
+        Json seeded = input;
+        seeded["seed"] = seed;
+        plan.inputs.push_back(std::move(seeded));
+        for (const auto& [algorithm, parameters] : settings) {
+          plan.runs.push_back({static_cast<int>(plan.inputs.size()) - 1, algorithm, parameters});
+        }
+      }
+    }
+  }
+  return plan;
+}
+
+}  // namespace curvebench

@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -15,6 +16,7 @@
 #include "generators/closed_curves.h"
 #include "generators/dominant_points.h"
 #include "generators/medial_axis.h"
+#include "generators/outline_import.h"
 #include "generators/random.h"
 #include "generators/samplers.h"
 #include "io/ground_truth_json.h"
@@ -103,6 +105,8 @@ struct GenerateOptions {
   std::string outliers = "0";
   std::string seed = "1";
   std::string dense = "8192";
+  std::string input;
+  std::string input_format = "auto";
   std::string points;
   std::string truth;
 };
@@ -131,7 +135,7 @@ const Family& find_family(const std::string& name) {
   }
   std::string known;
   for (const auto& family : families()) known += (known.empty() ? "" : ", ") + family.name;
-  throw std::runtime_error("--family: unknown family '" + name + "' (known: " + known + ")");
+  throw std::runtime_error("--family: unknown family '" + name + "' (known: " + known + ", outline)");
 }
 
 ShapeParameters resolve_shape(const Family& family, const std::vector<std::string>& assignments) {
@@ -153,6 +157,34 @@ ShapeParameters resolve_shape(const Family& family, const std::vector<std::strin
   return values;
 }
 
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open");
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+bool has_extension(const std::string& path, std::initializer_list<std::string_view> extensions) {
+  return std::any_of(extensions.begin(), extensions.end(), [&](std::string_view e) { return path.ends_with(e); });
+}
+
+// The outline family: closed polygons read from --input, densified with corners kept.
+Scene outline_scene(const GenerateOptions& o, int dense) {
+  if (o.input.empty()) throw std::runtime_error("--family outline needs --input FILE (rings text, GeoJSON or SVG)");
+  std::string format = o.input_format;
+  if (format == "auto") {
+    format = has_extension(o.input, {".geojson", ".json"}) ? "geojson" : has_extension(o.input, {".svg", ".path"}) ? "svg" : "rings";
+  }
+  const std::string text = read_text_file(o.input);
+  Rings rings;
+  if (format == "rings") rings = parse_rings_text(text, o.input);
+  else if (format == "geojson") rings = parse_geojson(text, o.input);
+  else if (format == "svg") rings = parse_svg_paths(text, o.input);
+  else throw std::runtime_error("--input-format: must be auto, rings, geojson or svg");
+  return polygon_scene(o.input, rings, dense);
+}
+
 GroundTruth make_ground_truth(const Scene& scene, const SampledScene& samples, const MedialAxis& medial_axis,
                               nlohmann::ordered_json generator) {
   GroundTruth truth;
@@ -171,7 +203,9 @@ GroundTruth make_ground_truth(const Scene& scene, const SampledScene& samples, c
 
 void run(const GenerateOptions& o) {
   if (o.points.empty()) throw std::runtime_error("--points: a points file to write is required");
-  const Family& family = find_family(o.family);
+  const bool outline = o.family == "outline";
+  static const Family outline_family{"outline", "", {}, false, nullptr, nullptr};
+  const Family& family = outline ? outline_family : find_family(o.family);
   const ShapeParameters shape = resolve_shape(family, o.shape);
   const auto seed = static_cast<std::uint64_t>(parse_integer("--seed", o.seed, 0, (1LL << 53)));
   const int dense = static_cast<int>(parse_integer("--dense", o.dense, 16, 1 << 24));
@@ -187,6 +221,10 @@ void run(const GenerateOptions& o) {
   for (const auto& p : family.parameters) {
     if (p.integer) generator["shape"][p.name] = static_cast<long long>(shape.at(p.name));
     else generator["shape"][p.name] = shape.at(p.name);
+  }
+  if (outline) {
+    generator["input"] = o.input;
+    generator["input_format"] = o.input_format;
   }
   generator["dense"] = dense;
   generator["sampler"] = o.sampler;
@@ -210,7 +248,7 @@ void run(const GenerateOptions& o) {
   generator["outliers"] = outliers;
   generator["seed"] = seed;
 
-  const Scene scene = family.build(shape, seed, dense);
+  const Scene scene = outline ? outline_scene(o, dense) : family.build(shape, seed, dense);
   // One seed drives everything; each stage draws from its own derived stream.
   SampledScene samples = o.sampler == "epsilon" ? epsilon_sample(scene, epsilon, derive_seed(seed, 1), min_step_fraction)
                                                 : arc_length_sample(scene, count, o.sampler == "random", derive_seed(seed, 1));
@@ -238,6 +276,7 @@ std::string family_help() {
     for (const auto& p : family.parameters) help << "; " << p.name << "=" << p.default_value;
     if (family.seeded) help << " (shape from --seed)";
   }
+  help << "\n  outline: closed polygons read from --input (holes kept, corners where they turn > 10 degrees)";
   return help.str();
 }
 
@@ -262,6 +301,10 @@ void add_generate_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed,-s", o->seed, "seed of the shape (random families), the sampler, noise and outliers")->capture_default_str();
   cmd->add_option("--dense", o->dense, "dense vertices per curve of the true polyline")->capture_default_str();
+  cmd->add_option("--input,-i", o->input, "outline file for --family outline: rings text (x y per line, blank line between rings), "
+                                         "GeoJSON (Polygon/MultiPolygon) or SVG (path data or <path d=...>)");
+  cmd->add_option("--input-format", o->input_format, "auto (from the extension: .geojson/.json, .svg/.path, else rings), "
+                                                     "rings, geojson or svg")->capture_default_str();
   cmd->add_option("--points,-o", o->points, "points file to write")->required();
   cmd->add_option("--truth,-t", o->truth, "ground-truth JSON to write");
   cmd->callback([o] { run(*o); });

@@ -93,3 +93,51 @@ def test_bad_settings_give_one_line_and_no_file(run, tmp_path, args, message):
     assert message in result.stderr
     assert len(result.stderr.strip().splitlines()) == 1
     assert not points.exists() and not truth.exists()
+
+
+def real_outlines(*args):
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    script = Path(__file__).resolve().parents[2] / "generators" / "real_outlines.py"
+    return subprocess.run([sys.executable, str(script), *map(str, args)], capture_output=True, text=True, timeout=120)
+
+
+def test_glyph_outlines_are_the_default_real_shapes(run, tmp_path):
+    result = real_outlines("glyphs", "--out", tmp_path / "glyphs", "--chars", "B8&")
+    assert result.returncode == 0, result.stderr
+    curves = {}
+    for rings in sorted((tmp_path / "glyphs").glob("*.rings")):
+        generated, points, truth = generate(run, tmp_path, "--family", "outline", "--input", rings, "--epsilon", "0.3",
+                                            name=rings.stem)
+        assert generated.returncode == 0, generated.stderr
+        curves[rings.stem] = len(json.loads(truth.read_text())["curves"])
+    assert curves == {"glyph_0042": 3, "glyph_0038": 3, "glyph_0026": 2}  # B and 8: two holes; &: one
+
+
+def test_png_silhouette_traced_with_holes(run, tmp_path):
+    import numpy as np
+    import matplotlib.pyplot as plt
+
+    y, x = np.mgrid[0:120, 0:160]
+    r = np.hypot(x - 80, y - 60)
+    plt.imsave(tmp_path / "ring.png", 1 - ((r < 50) & (r > 20)).astype(float), cmap="gray")
+    result = real_outlines("png", tmp_path / "ring.png", "--out", tmp_path / "ring.rings")
+    assert result.returncode == 0, result.stderr
+    generated, _, truth = generate(run, tmp_path, "--family", "outline", "--input", tmp_path / "ring.rings")
+    assert generated.returncode == 0, generated.stderr
+    assert len(json.loads(truth.read_text())["curves"]) == 2  # outer contour and hole
+
+    plt.imsave(tmp_path / "blank.png", np.ones((40, 40)), cmap="gray")
+    blank = real_outlines("png", tmp_path / "blank.png", "--out", tmp_path / "blank.rings")
+    assert blank.returncode == 1 and "no shape in the image" in blank.stderr
+    assert not (tmp_path / "blank.rings").exists()
+
+
+def test_self_intersecting_outline_is_an_error(run, tmp_path):
+    (tmp_path / "bow.rings").write_text("0 0\n2 2\n2 0\n0 2\n")
+    result, points, truth = generate(run, tmp_path, "--family", "outline", "--input", tmp_path / "bow.rings")
+    assert result.returncode != 0 and "not simple" in result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1
+    assert not points.exists() and not truth.exists()

@@ -21,7 +21,7 @@ std::vector<Point2> true_dominant_points(const Scene& scene, int window) {
       curvature[i] = std::abs(std::atan2(cross(in, out_edge), dot(in, out_edge))) / (0.5 * (norm(in) + norm(out_edge)));
       mean += curvature[i] / n;
     }
-    const int reach = std::min(window, (n - 1) / 2);
+    const int reach = std::min(std::max(window, n / 512), (n - 1) / 2);
     for (int i = 0; i < n; ++i) {
       // 0.1% above the mean, so that rounding on a circle makes no peak.
       bool peak = curvature[i] > 1.001 * mean;

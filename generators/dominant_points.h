@@ -2,7 +2,8 @@
 //
 // In: a Scene. Out: for each curve with corners (DenseCurve::corners), the corners; for a
 // smooth curve, the dense vertices where |curvature| is a strict maximum over the
-// `window` vertices on either side and above the curve's mean |curvature| (the tips and the
+// max(`window`, n/512) vertices on either side (n dense vertices: rounding noise grows as
+// the spacing shrinks) and above the curve's mean |curvature| (the tips and the
 // bottoms of concavities: a circle has none, an ellipse the two ends of its major axis).
 // Curves in order, points in order along each curve.
 #pragma once

@@ -257,12 +257,14 @@ void run(const GenerateOptions& o) {
                      derive_seed(seed, 2));
   }
   if (outliers > 0) add_outliers(scene, samples, outliers, derive_seed(seed, 3));
-  const MedialAxis medial_axis = family.exact_medial_axis ? family.exact_medial_axis(shape) : interior_medial_axis(scene);
-  const GroundTruth truth = make_ground_truth(scene, samples, medial_axis, generator);
-
   // Everything is computed before anything is written, so a bad setting leaves no file.
+  std::string truth_text;
+  if (!o.truth.empty()) {
+    const MedialAxis medial_axis = family.exact_medial_axis ? family.exact_medial_axis(shape) : interior_medial_axis(scene);
+    truth_text = ground_truth_to_json(make_ground_truth(scene, samples, medial_axis, generator)).dump() + "\n";
+  }
   write_points_file(o.points, samples.points, "curvebench generate " + generator.dump());
-  if (!o.truth.empty()) write_file_atomically(o.truth, ground_truth_to_json(truth).dump() + "\n");
+  if (!o.truth.empty()) write_file_atomically(o.truth, truth_text);
   const auto outlier_count = std::count(samples.curve.begin(), samples.curve.end(), -1);
   std::cout << "wrote " << samples.points.size() << " points (" << outlier_count << " outliers) of " << scene.curves.size()
             << " curve(s) to " << o.points << (o.truth.empty() ? "" : " and the ground truth to " + o.truth) << "\n";

@@ -1,29 +1,76 @@
 #!/usr/bin/env bash
-# The main job: set up, build, and run the default comparison ending in a report.
-# Usage: bash harness/scripts/main.sh [points-file]   (a points file of your own is reconstructed too)
+# The main job: set up, build, run the default comparison and a short scaling benchmark, and
+# write the report (HTML page and figures); prints the page's path at the end.
+#
+# Usage: bash harness/scripts/main.sh [FILE ...]
+#   FILE.json  a sweep configuration (harness/configs/ shows the format) run instead of
+#              harness/configs/default.json
+#   any other  a points file of your own, reconstructed by every algorithm and shown in the
+#              report's gallery beside the bundled shapes
+# Everything goes to out/ (override with CURVEBENCH_OUT): results.jsonl, scaling.json,
+# gallery/ (points files and reconstruction JSONs) and report/index.html.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/setup.sh"
-curvebench_build
 
-out="$CURVEBENCH_ROOT/out"
-mkdir -p "$out"
-curvebench="$CURVEBENCH_BUILD_DIR/harness/curvebench"
-
-# A bundled generated example: 300 random samples of the rose r = 1 + 0.3 cos 5t.
-"$CURVEBENCH_VENV/bin/python" - "$out/rose.xy" <<'PY'
-import math, random, sys
-rng = random.Random(5)
-ts = sorted(rng.uniform(0, 2 * math.pi) for _ in range(300))
-with open(sys.argv[1], "w") as f:
-    f.write("# 300 random samples of r = 1 + 0.3 cos(5t), seed 5\n")
-    for t in ts:
-        r = 1 + 0.3 * math.cos(5 * t)
-        f.write(f"{r * math.cos(t)!r} {r * math.sin(t)!r}\n")
-PY
-inputs=("$out/rose.xy")
-[ $# -ge 1 ] && inputs+=("$1")
-for input in "${inputs[@]}"; do
-  name="$(basename "${input%.*}")"
-  "$curvebench" reconstruct --algorithm labeling --input "$input" --output "$out/$name.labeling.json" --svg "$out/$name.labeling.svg"
-  echo "wrote $out/$name.labeling.json and $out/$name.labeling.svg"
+config="$CURVEBENCH_ROOT/harness/configs/default.json"
+own_points=()
+for argument in "$@"; do
+  [ -f "$argument" ] || { echo "main: $argument: no such file" >&2; exit 1; }
+  case "$argument" in
+    *.json) config="$(realpath "$argument")" ;;
+    *) own_points+=("$(realpath "$argument")") ;;
+  esac
 done
+
+started=$SECONDS
+step() { echo "== [$((SECONDS - started)) s] $*" >&2; }
+
+step "build (curvebench, curvebench_benchmark)"
+cmake -S "$CURVEBENCH_ROOT" -B "$CURVEBENCH_BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCURVEBENCH_BENCHMARKS=ON >/dev/null
+ninja -C "$CURVEBENCH_BUILD_DIR" curvebench curvebench_benchmark >&2
+curvebench="$CURVEBENCH_BUILD_DIR/harness/curvebench"
+benchmark="$CURVEBENCH_BUILD_DIR/harness/bench/curvebench_benchmark"
+
+out="${CURVEBENCH_OUT:-$CURVEBENCH_ROOT/out}"
+mkdir -p "$out"
+rm -rf "$out/results.jsonl" "$out/results.jsonl.inputs" "$out/gallery" "$out/report"
+
+step "sweep $config"
+"$curvebench" sweep "$config" --out "$out/results.jsonl" --jobs 2
+
+# Short: n = 10^3 ... 10^5, and a run predicted to take over 2 s is skipped (its row says so).
+# The full suite: curvebench_benchmark --max_n=10000000 (see harness/bench/scaling_benchmark.cpp).
+step "scaling benchmark (short)"
+"$benchmark" --max_n=100000 --max_run_seconds=2 --benchmark_min_time=0.05 \
+  --benchmark_out="$out/scaling.json" --benchmark_out_format=json >&2
+
+step "gallery reconstructions"
+mkdir -p "$out/gallery"
+gallery_shape() {  # name, then `curvebench generate` options
+  local name="$1"
+  shift
+  "$curvebench" generate "$@" --points "$out/gallery/$name.xy" >/dev/null
+}
+gallery_shape rose --family rose --epsilon 0.3 --seed 2
+gallery_shape three-curves --family disjoint --epsilon 0.25 --seed 3
+gallery_shape star --family star --epsilon 0.2 --seed 1
+gallery_shape concavities --family concavities --epsilon 0.25 --seed 1
+gallery_shape noisy-ellipse --family ellipse --epsilon 0.15 --noise 0.05 --seed 1
+gallery_shape rose-20pct-outliers --family rose --epsilon 0.2 --outliers 0.2 --seed 4
+for points in "${own_points[@]}"; do
+  cp "$points" "$out/gallery/"
+done
+algorithms=$("$curvebench" list | grep -v '^ ')
+for points in "$out"/gallery/*; do
+  for algorithm in $algorithms; do
+    # A failed reconstruction still writes its error record, which the gallery shows.
+    "$curvebench" reconstruct --algorithm "$algorithm" --input "$points" \
+      --output "$out/gallery/$(basename "${points%.*}").$algorithm.json" 2>/dev/null || true
+  done
+done
+
+step "report"
+page=$(PYTHONPATH="$CURVEBENCH_ROOT" "$CURVEBENCH_VENV/bin/python" -m reports --out "$out/report" \
+  --results "$out/results.jsonl" --benchmark "$out/scaling.json" --reconstructions "$out/gallery")
+step "done"
+echo "$page"

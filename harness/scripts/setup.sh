@@ -28,6 +28,12 @@ curvebench_install_debian_packages() {
   fi
 }
 
+# Headless Chromium and its WebDriver: only the tests need them (the report page is opened
+# and screenshotted as a person would see it), so only the test command calls this.
+curvebench_install_browser() {
+  curvebench_install_debian_packages chromium chromium-driver
+}
+
 curvebench_python_env() {
   local requirements="$CURVEBENCH_ROOT/reports/requirements.txt"
   local stamp="$CURVEBENCH_VENV/.requirements.sha256"

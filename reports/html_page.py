@@ -54,6 +54,9 @@ def write_page(out_dir: pathlib.Path, figures: list[SavedFigure], summary_html: 
 <p class="sources">Made from: {html.escape('; '.join(sources))}.</p>
 <nav><a href="#summary">Summary</a>{nav}</nav>
 <h2 id="summary">Which method is best under which condition</h2>
+<p>From the same files as the figures below. The best value of each line is shaded; ties share
+first place. A run that failed (error, timeout, crash) counts as unsuccessful in the shares and
+is left out of the means.</p>
 {summary_html}
 {missing_html}
 {''.join(sections)}

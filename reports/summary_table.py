@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import collections
 import dataclasses
+import html
 from typing import Callable
 
 import numpy as np
 
 from reports.accuracy_figures import density_rows, epsilon_rows, noise_rows, outlier_rows, right_topology
 from reports.scaling_results import DELAUNAY, ScalingSuite
-from reports.style import sorted_algorithms
+from reports.style import format_values, sorted_algorithms
 from reports.sweep_results import SweepRow
 
 
@@ -72,8 +73,8 @@ def summary_lines(rows: list[SweepRow], suite: ScalingSuite | None) -> list[Summ
     clean = epsilon_rows(rows)
     if clean:
         lines.append(SummaryLine("Clean smooth curves (epsilon-samples)",
-                                 "largest epsilon with every run exact", _largest_all_exact_epsilon(clean), True,
-                                 "{:.3g}"))
+                                 f"largest epsilon (of {format_values({r.epsilon for r in clean})}) up to which "
+                                 "every run is exact", _largest_all_exact_epsilon(clean), True, "{:.3g}"))
         single = [r for r in clean if r.true_curves == 1]
         several = [r for r in clean if (r.true_curves or 0) > 1]
         if single:
@@ -129,7 +130,7 @@ def summary_lines(rows: list[SweepRow], suite: ScalingSuite | None) -> list[Summ
 
 def summary_table_html(lines: list[SummaryLine]) -> str:
     algorithms = sorted_algorithms({a for line in lines for a in line.values})
-    head = "".join(f"<th>{a}</th>" for a in algorithms)
+    head = "".join(f"<th>{html.escape(a)}</th>" for a in algorithms)
     body = []
     for line in lines:
         ranking = line.ranking()
@@ -145,8 +146,8 @@ def summary_table_html(lines: list[SummaryLine]) -> str:
         winners = [a for a in ranking if line.values[a] == line.values[best]]
         runner_up = next((a for a in ranking if line.values[a] != line.values[best]), "-")
         direction = "higher is better" if line.higher_is_better else "lower is better"
-        body.append(f"<tr><th scope=\"row\">{line.condition}</th><td>{line.measure} <span class=\"direction\">"
-                    f"({direction})</span></td><td class=\"winner\">{', '.join(winners)}</td><td>{runner_up}</td>"
-                    f"{''.join(cells)}</tr>")
+        body.append(f"<tr><th scope=\"row\">{html.escape(line.condition)}</th><td>{html.escape(line.measure)} "
+                    f"<span class=\"direction\">({direction})</span></td><td class=\"winner\">"
+                    f"{html.escape(', '.join(winners))}</td><td>{html.escape(runner_up)}</td>{''.join(cells)}</tr>")
     return (f"<table class=\"summary\"><thead><tr><th>condition</th><th>measure</th><th>best</th>"
             f"<th>runner-up</th>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>")

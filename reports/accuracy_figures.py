@@ -21,13 +21,31 @@ ORACLE_LABEL = "samples joined in true order"
 
 
 def density_rows(rows: list[SweepRow]) -> list[SweepRow]:
-    """Clean runs sampled with a fixed number of points (the density experiment)."""
-    return [r for r in rows if r.count is not None and r.epsilon is None and r.noise == 0 and r.outliers == 0]
+    """Clean runs (no noise, no outliers) of every shape sampled at two or more densities."""
+    clean = [r for r in rows if r.noise == 0 and r.outliers == 0]
+    levels = collections.defaultdict(set)
+    for r in clean:
+        levels[r.shape].add(r.sampling_level)
+    return [r for r in clean if len(levels[r.shape]) >= 2]
+
+
+def samples_per_level(rows: list[SweepRow]) -> dict[tuple[str, float], float]:
+    """The median number of input points of each (shape, sampling level): the density axis."""
+    points = collections.defaultdict(list)
+    for r in rows:
+        if r.input_points is not None:
+            points[(r.shape, r.sampling_level)].append(r.input_points)
+    return {key: float(np.median(values)) for key, values in points.items()}
 
 
 def epsilon_rows(rows: list[SweepRow]) -> list[SweepRow]:
-    """Clean epsilon-samples (the guarantee experiment)."""
-    return [r for r in rows if r.epsilon is not None and r.noise == 0 and r.outliers == 0]
+    """Clean epsilon-samples of smooth curves (the guarantee experiment)."""
+    return [r for r in rows if r.epsilon is not None and r.noise == 0 and r.outliers == 0 and r.smooth]
+
+
+def corner_rows(rows: list[SweepRow]) -> list[SweepRow]:
+    """Clean epsilon-samples of curves with sharp corners, where the guarantees do not apply."""
+    return [r for r in rows if r.epsilon is not None and r.noise == 0 and r.outliers == 0 and not r.smooth]
 
 
 def noise_rows(rows: list[SweepRow]) -> list[SweepRow]:
@@ -96,26 +114,27 @@ def l2_density_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFigur
     columns = min(3, len(shapes))
     grid_rows = math.ceil(len(shapes) / columns)
     fig, axes = plt.subplots(grid_rows, columns, figsize=(4.6 * columns, 3.6 * grid_rows + 0.5), squeeze=False)
+    samples = samples_per_level(chosen)
     for ax, shape in zip(axes.flat, shapes):
-        of_shape = [r for r in chosen if r.shape == shape and r.ok]
-        _oracle_line(ax, [r for r in chosen if r.shape == shape], lambda r: r.count)
+        of_shape = [r for r in chosen if r.shape == shape]
+        density = {r.sampling_level: samples.get((shape, r.sampling_level)) for r in of_shape}
+        _oracle_line(ax, of_shape, lambda r: density[r.sampling_level])
         for order, algorithm in enumerate(algorithms):
-            by_count = collections.defaultdict(list)
+            by_density = collections.defaultdict(list)
             for r in of_shape:
-                if r.algorithm == algorithm and r.metric("l2_error") is not None:
-                    by_count[r.count].append(r.metric("l2_error"))
-            if not by_count:
+                if r.ok and r.algorithm == algorithm and r.metric("l2_error") is not None:
+                    by_density[density[r.sampling_level]].append(r.metric("l2_error"))
+            if not by_density:
                 continue
-            counts = sorted(by_count)
-            stats = [_statistics(by_count[c]) for c in counts]
+            xs = sorted(by_density)
+            stats = [_statistics(by_density[x]) for x in xs]
             color = algorithm_color(algorithm)
-            ax.plot(counts, [s[0] for s in stats], color=color, marker=algorithm_marker(algorithm),
+            ax.plot(xs, [s[0] for s in stats], color=color, marker=algorithm_marker(algorithm),
                     markersize=4, linewidth=stacked_line_width(order, len(algorithms)), alpha=0.9, label=algorithm)
-            ax.fill_between(counts, [s[1] for s in stats], [s[2] for s in stats],
-                            color=color, alpha=0.12, linewidth=0)
+            ax.fill_between(xs, [s[1] for s in stats], [s[2] for s in stats], color=color, alpha=0.12, linewidth=0)
         ax.set_xscale("log")
         _l2_axis(ax)
-        _label_sampled_values(ax, sorted({r.count for r in of_shape}))
+        _label_sampled_values(ax, sorted({x for x in density.values() if x is not None}))
         ax.set_title(shape)
         ax.set_xlabel("number of samples")
         ax.grid(True, which="both", alpha=0.25)
@@ -131,9 +150,12 @@ def l2_density_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFigur
     fig.legend([legend[label] for label in labels], labels, loc="upper center", ncol=min(len(labels), 7),
                frameon=False)
     fig.tight_layout(rect=(0, 0, 1, 1 - 0.4 / fig.get_figheight()))
-    densities = sorted({r.count for r in chosen})
-    caption = (f"{_runs_text(chosen)}; each shape sampled at {format_values(densities, '{:d}')} points along arc "
-               "length, without noise or outliers. L2 error is the area of the symmetric difference between the true "
+    counts = sorted({r.count for r in chosen if r.epsilon is None})
+    epsilons = sorted({r.epsilon for r in chosen if r.epsilon is not None})
+    samplings = ([f"{format_values(counts, '{:d}')} points along arc length"] if counts else []) + \
+        ([f"epsilon-samples at epsilon = {format_values(epsilons)}"] if epsilons else [])
+    caption = (f"{_runs_text(chosen)}; each shape sampled as {' and '.join(samplings)}, without noise or outliers; "
+               "the axis is the median number of samples at each setting. L2 error is the area of the symmetric difference between the true "
                "region and the even-odd fill of the reconstructed edges, over the true area; lines are medians over "
                "seeds, bands the 25-75% range. The dotted line joins the samples in their true order: the error the "
                f"sampling itself causes. The error axis is logarithmic above {L2_LINEAR_BELOW:g} and linear below, "
@@ -177,7 +199,9 @@ def success_epsilon_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> Saved
     fig.legend(handles, labels, loc="lower center", ncol=min(len(labels), 5), frameon=False)
     fig.tight_layout(rect=(0, 0.09, 1, 1))
     caption = (f"{_runs_text(chosen)}; epsilon-samples (every curve point within epsilon times the local feature "
-               f"size of a sample, random steps) at epsilon = {format_values(epsilons)}, without noise or outliers. "
+               f"size of a sample, random steps) at epsilon = {format_values(epsilons)}, without noise or outliers, "
+               "of smooth curves only (the bounds are for smooth curves; shapes with sharp corners are in the summary "
+               "table). "
                "Left: share of runs whose edge set equals the true adjacency (interpolating methods only). Right: "
                "share whose output is a 2-manifold with the true number of closed curves. Dashed lines: the largest "
                "epsilon each method is proved (crust 0.252, NN-crust 1/3) or claimed (labeling 0.4) to reconstruct. "
@@ -189,8 +213,9 @@ def _oracle_line(ax, rows: list[SweepRow], setting):
     """The median error of the samples joined in their true order, per value of `setting`."""
     by_value = collections.defaultdict(list)
     for r in rows:
-        if r.oracle_l2_error is not None:
-            by_value[setting(r)].append(r.oracle_l2_error)
+        value = setting(r)
+        if r.oracle_l2_error is not None and value is not None:
+            by_value[value].append(r.oracle_l2_error)
     if by_value:
         values = sorted(by_value)
         ax.plot(values, [float(np.median(by_value[v])) for v in values], color=ORACLE_COLOR, linestyle=":",

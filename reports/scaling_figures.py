@@ -69,10 +69,14 @@ def _what_was_run(suite: ScalingSuite) -> str:
     size_text = ", ".join(f"10^{e}" if 10 ** e == n else str(n) for e, n in zip(exponents, sizes))
     context = suite.context
     machine = f"{context.get('num_cpus', '?')} CPUs at {context.get('mhz_per_cpu', '?')} MHz"
-    skipped = [run for run in suite.runs if run.skip_reason is not None]
+    first_skipped = {}  # (algorithm, input) -> its smallest skipped run; the larger n follow from it
+    for run in sorted(suite.runs, key=lambda run: run.n):
+        if run.skip_reason is not None:
+            first_skipped.setdefault((run.algorithm, run.input), run)
     skipped_text = ""
-    if skipped:
-        listed = "; ".join(f"{run.algorithm}/{run.input} n={run.n} ({run.skip_reason})" for run in skipped)
+    if first_skipped:
+        listed = "; ".join(f"{run.algorithm} on {run.input} from n={run.n:,} ({run.skip_reason})"
+                           for run in first_skipped.values())
         skipped_text = f" Not run: {listed}."
     return (f"curvebench_benchmark ({suite.source.name}, {context.get('date', 'undated')}, {machine}): "
             f"the bare CGAL Delaunay construction and {len(suite.algorithms())} algorithms with default parameters "

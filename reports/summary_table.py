@@ -9,7 +9,8 @@ from typing import Callable
 
 import numpy as np
 
-from reports.accuracy_figures import density_rows, epsilon_rows, noise_rows, outlier_rows, right_topology
+from reports.accuracy_figures import corner_rows, density_rows, epsilon_rows, noise_rows, outlier_rows, \
+    right_topology
 from reports.scaling_results import DELAUNAY, ScalingSuite
 from reports.style import format_values, sorted_algorithms
 from reports.sweep_results import SweepRow
@@ -85,14 +86,21 @@ def summary_lines(rows: list[SweepRow], suite: ScalingSuite | None) -> list[Summ
                                      _success_share(several, right_topology), True, "{:.0f}"))
     dense = density_rows(rows)
     if dense:
-        sparse_count = {shape: min(r.count for r in dense if r.shape == shape) for shape in {r.shape for r in dense}}
-        densest_count = {shape: max(r.count for r in dense if r.shape == shape) for shape in {r.shape for r in dense}}
-        lines.append(SummaryLine("Sparse sampling (fewest points per shape)", "mean L2 error",
-                                 _mean_by_algorithm([r for r in dense if r.count == sparse_count[r.shape]],
+        shapes = {r.shape for r in dense}
+        sparsest = {shape: min(r.sampling_level for r in dense if r.shape == shape) for shape in shapes}
+        densest = {shape: max(r.sampling_level for r in dense if r.shape == shape) for shape in shapes}
+        lines.append(SummaryLine("Sparse sampling (sparsest setting of each shape)", "mean L2 error",
+                                 _mean_by_algorithm([r for r in dense if r.sampling_level == sparsest[r.shape]],
                                                     lambda r: r.metric("l2_error")), False, "{:.2e}"))
-        lines.append(SummaryLine("Dense sampling (most points per shape)", "mean L2 error",
-                                 _mean_by_algorithm([r for r in dense if r.count == densest_count[r.shape]],
+        lines.append(SummaryLine("Dense sampling (densest setting of each shape)", "mean L2 error",
+                                 _mean_by_algorithm([r for r in dense if r.sampling_level == densest[r.shape]],
                                                     lambda r: r.metric("l2_error")), False, "{:.2e}"))
+    corners = corner_rows(rows)
+    if corners:
+        families = ", ".join(sorted({r.family for r in corners}))
+        lines.append(SummaryLine(f"Sharp corners ({families}), all epsilons", "exact runs (%)",
+                                 _success_share(corners, lambda r: None if r.metric("exact") is None
+                                                else r.metric("exact") == 1), True, "{:.0f}"))
     noisy = noise_rows(rows)
     if noisy:
         strongest = max(r.noise for r in noisy)

@@ -15,6 +15,10 @@ import json
 import math
 import pathlib
 
+# Families of `curvebench generate` whose curves have sharp corners (the guarantees of the
+# epsilon-sampling theory are for smooth curves; imported outlines have corners too).
+SHARP_CORNER_FAMILIES = {"star", "square", "l-shape", "horned", "outline"}
+
 # `curvebench generate` defaults of the settings the report groups by.
 GENERATE_DEFAULTS = {"family": "random", "sampler": "epsilon", "epsilon": 0.2, "count": 200, "noise": 0.0,
                      "noise_scale": "lfs", "outliers": 0.0, "seed": 1}
@@ -25,7 +29,8 @@ class SweepRow:
     algorithm: str
     parameters: dict
     settings: dict  # the input's generator settings as the row states them
-    shape: str  # family and shape parameters: "rose", "rose k=3"
+    family: str
+    shape: str  # family and shape parameters or outline file: "rose", "rose k=3", "outline glyph_0041"
     sampler: str  # "epsilon", "uniform" or "random"
     epsilon: float | None  # only for the epsilon-sampler
     count: int | None  # only for the uniform and random samplers
@@ -46,6 +51,16 @@ class SweepRow:
     def ok(self) -> bool:
         return self.status == "ok"
 
+    @property
+    def smooth(self) -> bool:
+        return self.family not in SHARP_CORNER_FAMILIES
+
+    @property
+    def sampling_level(self) -> float:
+        """Orders the samplings of one shape from sparse to dense: the point count of the uniform
+        and random samplers, minus epsilon for the epsilon-sampler."""
+        return float(self.count) if self.epsilon is None else -self.epsilon
+
     def metric(self, name: str) -> float | None:
         """A metric as a number (booleans as 0/1); None where absent, null or not a number."""
         value = self.metrics.get(name)
@@ -59,7 +74,8 @@ class SweepRow:
 def shape_label(settings: dict) -> str:
     family = str(settings.get("family", GENERATE_DEFAULTS["family"]))
     shape = settings.get("shape") or {}
-    return " ".join([family] + [f"{name}={value}" for name, value in shape.items()])
+    outline = [pathlib.Path(str(settings["input"])).stem] if "input" in settings else []
+    return " ".join([family] + outline + [f"{name}={value}" for name, value in shape.items()])
 
 
 def row_from_json(row: dict) -> SweepRow:
@@ -70,6 +86,7 @@ def row_from_json(row: dict) -> SweepRow:
         algorithm=row["algorithm"],
         parameters=row.get("parameters", {}),
         settings=settings,
+        family=str(setting["family"]),
         shape=shape_label(settings),
         sampler=str(setting["sampler"]),
         epsilon=float(setting["epsilon"]) if setting["sampler"] == "epsilon" else None,

@@ -24,7 +24,9 @@ ERROR_FACTOR = {"labeling": 1.0, "crust": 1.5, "nn-crust": 1.2, "optimal-transpo
 
 def sweep_row(algorithm, settings, seed, metrics, status="ok"):
     """A row as harness/sweep/run_sweep.h describes it."""
-    row = {"algorithm": algorithm, "parameters": {}, "input": {**settings, "seed": seed}, "input_points": 100,
+    # As many points as a uniform sampler is asked for; an epsilon-sampler gives more for a smaller epsilon.
+    points = settings.get("count", round(12 / settings.get("epsilon", 0.2)))
+    row = {"algorithm": algorithm, "parameters": {}, "input": {**settings, "seed": seed}, "input_points": points,
            "oracle_l2_error": metrics.pop("oracle_l2_error", 0.001), "status": status}
     if status == "ok":
         row.update({"metrics": metrics, "timing_ms": {"delaunay": 0.5, "total": 1.0 + seed}, "evaluate_ms": 2.0})

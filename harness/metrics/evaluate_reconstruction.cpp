@@ -59,6 +59,7 @@ ReconstructionMetrics evaluate_reconstruction(const GroundTruth& truth, std::spa
     const bool interpolating = !reconstruction.curve_vertices;
     const std::vector<Segment2> curve =
         edge_segments(interpolating ? points : std::span<const Point2>(*reconstruction.curve_vertices), edges);
+    require_finite(curve, "the reconstructed curve");
     metrics.l2_error = l2_error(true_curves, curve);
     metrics.hausdorff = hausdorff_distance(true_curves, curve, hausdorff_tolerance) / diagonal;
     metrics.topology = curve_topology(edges);
@@ -67,6 +68,7 @@ ReconstructionMetrics evaluate_reconstruction(const GroundTruth& truth, std::spa
 
   if (reconstruction.medial_axis) {
     const auto reconstructed = graph_segments(reconstruction.medial_axis->vertices, reconstruction.medial_axis->edges);
+    require_finite(reconstructed, "the reconstructed medial axis");
     const auto expected = graph_segments(truth.medial_axis.vertices, truth.medial_axis.edges);
     metrics.medial_axis_hausdorff = hausdorff_distance(expected, reconstructed, hausdorff_tolerance) / diagonal;
   }

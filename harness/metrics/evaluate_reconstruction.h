@@ -18,7 +18,8 @@
 //                                  reconstructed interior medial axes (isolated vertices count
 //                                  as points), over the same diagonal; infinite if either is empty
 //   dominant points  count, CR, ISE, FOM over the samples (dominant_point_quality.h)
-// Throws std::invalid_argument if the point count differs from the truth's sample count, and
+// Throws std::invalid_argument if the point count differs from the truth's sample count or a
+// reconstructed coordinate is not finite (NaN, infinite), and
 // std::out_of_range if an edge of the reconstruction names a vertex it does not have.
 #pragma once
 

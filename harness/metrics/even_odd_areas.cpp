@@ -98,6 +98,8 @@ double face_area(const Arrangement::Face_const_handle& face) {
 }  // namespace
 
 EvenOddAreas even_odd_areas(std::span<const Segment2> first, std::span<const Segment2> second) {
+  require_finite(first, "even-odd areas: the first segment set");
+  require_finite(second, "even-odd areas: the second segment set");
   std::vector<Traits::Curve_2> curves;
   curves.reserve(first.size() + second.size());
   auto add = [&curves](std::span<const Segment2> segments, Coverage coverage) {

@@ -21,7 +21,8 @@
 // depth 1, so the region is the whole square. An open polyline alone has area 0.
 //
 // Both regions are computed on one overlay arrangement, so the symmetric difference is a sum
-// of face areas, exact up to the final conversion of vertex coordinates to double.
+// of face areas, exact up to the final conversion of vertex coordinates to double. Throws
+// std::invalid_argument if a coordinate is not finite.
 #pragma once
 
 #include <span>

@@ -131,6 +131,8 @@ double directed_distance(std::span<const Segment2> from, const SegmentGrid& to, 
 
 double hausdorff_distance(std::span<const Segment2> a, std::span<const Segment2> b, double tolerance) {
   if (!(tolerance > 0.0)) throw std::invalid_argument("Hausdorff distance: the tolerance must be positive");
+  require_finite(a, "Hausdorff distance: the first segment set");
+  require_finite(b, "Hausdorff distance: the second segment set");
   if (a.empty() || b.empty()) return std::numeric_limits<double>::infinity();
   return std::max(directed_distance(a, SegmentGrid(b), tolerance), directed_distance(b, SegmentGrid(a), tolerance));
 }

@@ -10,7 +10,7 @@
 //      (d0 + d1 + L) / 2 (distance to a set changes no faster than position), so segments
 //      are bisected only while that bound exceeds the farthest distance found plus the
 //      tolerance. Infinity if either set is empty. Throws std::invalid_argument if
-//      tolerance <= 0.
+//      tolerance <= 0 or a coordinate is not finite.
 #pragma once
 
 #include <span>

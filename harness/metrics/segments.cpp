@@ -1,5 +1,6 @@
 #include "metrics/segments.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +25,14 @@ std::vector<Segment2> closed_polyline_segments(std::span<const Point2> polyline)
   segments.reserve(polyline.size());
   for (size_t i = 0; i < polyline.size(); ++i) segments.push_back({polyline[i], polyline[(i + 1) % polyline.size()]});
   return segments;
+}
+
+void require_finite(std::span<const Segment2> segments, const char* what) {
+  for (const Segment2& s : segments) {
+    if (!std::isfinite(s.source.x) || !std::isfinite(s.source.y) || !std::isfinite(s.target.x) || !std::isfinite(s.target.y)) {
+      throw std::invalid_argument(std::string(what) + " has a non-finite coordinate");
+    }
+  }
 }
 
 }  // namespace curvebench

@@ -96,6 +96,9 @@ TEST(EvaluateReconstruction, MismatchedPointsAreRejected) {
   Reconstruction bad;
   bad.curve_edges = std::vector<Edge>{{0, 8}};
   EXPECT_THROW(evaluate_reconstruction(unit_square_truth(), kSamples, bad), std::out_of_range);
+  Reconstruction not_finite;
+  not_finite.medial_axis = MedialAxis{{{0.5, 0.5}, {NAN, 0}}, {0.5, 0}, {{0, 1}}};
+  EXPECT_THROW(evaluate_reconstruction(unit_square_truth(), kSamples, not_finite), std::invalid_argument);
 }
 
 TEST(MetricsJson, AbsentOutputsHaveNoKeysAndInfiniteDistancesAreNull) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "metrics/curve_topology.h"
@@ -69,6 +70,11 @@ TEST(HausdorffDistance, TheFarthestPointInsideASegmentIsFound) {
 
 TEST(HausdorffDistance, EmptySetIsInfinitelyFar) {
   EXPECT_EQ(hausdorff_distance(unit_square(), {}, 0.1), std::numeric_limits<double>::infinity());
+}
+
+TEST(HausdorffDistance, NonFiniteCoordinatesAreRejected) {
+  const std::vector<Segment2> broken{{{0, 0}, {std::numeric_limits<double>::quiet_NaN(), 1}}};
+  EXPECT_THROW(hausdorff_distance(unit_square(), broken, 0.1), std::invalid_argument);
 }
 
 TEST(HausdorffDistance, ManySegmentsUseTheGridCorrectly) {

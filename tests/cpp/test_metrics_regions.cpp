@@ -1,6 +1,7 @@
 // L2 error and even-odd regions on hand-made cases whose areas are known by hand.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
@@ -133,6 +134,11 @@ TEST(EvenOddAreas, DenseCircleApproachesPi) {
 
 TEST(L2Error, TruthWithoutAreaIsRejected) {
   EXPECT_THROW(l2_error(std::vector<Segment2>{{{0, 0}, {1, 0}}}, square_segments(0, 0, 1)), std::invalid_argument);
+}
+
+TEST(EvenOddAreas, NonFiniteCoordinatesAreRejected) {
+  const std::vector<Segment2> broken{{{0, 0}, {1, std::numeric_limits<double>::infinity()}}};
+  EXPECT_THROW(even_odd_areas(square_segments(0, 0, 1), broken), std::invalid_argument);
 }
 
 TEST(Segments, EdgeOutsideThePointsIsRejected) {

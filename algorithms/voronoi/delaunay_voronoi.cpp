@@ -44,17 +44,36 @@ void deduplicate(std::span<const Point2> points, DelaunayVoronoi& dv) {
   }
 }
 
+// Circumcentre of a triangle in exact rational arithmetic, rounded once at the end.
+Point2 exact_circumcenter(Point2 a, Point2 b, Point2 c) {
+  using Q = CGAL::Exact_rational;
+  const Q bx = Q(b.x) - Q(a.x), by = Q(b.y) - Q(a.y), cx = Q(c.x) - Q(a.x), cy = Q(c.y) - Q(a.y);
+  const Q d = 2 * (bx * cy - by * cx);  // nonzero: Delaunay triangles are never flat
+  const Q b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  return {CGAL::to_double(Q(a.x) + (cy * b2 - by * c2) / d), CGAL::to_double(Q(a.y) + (bx * c2 - cx * b2) / d)};
+}
+
 // Circumcentre, circumradius and a bound on the centre's absolute rounding error, with a
 // wide margin: the formula loses about |ab||ac| / |cross(ab, ac)| in relative precision.
+// A nearly flat triangle (three samples along a straight stretch) would lose every digit, or
+// divide by a cross product that rounds to zero, so its centre is computed exactly instead.
 void circumcircle(Point2 a, Point2 b, Point2 c, Point2& center, double& radius, double& error) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
   const Point2 ab = b - a, ac = c - a;
   const double area2 = cross(ab, ac);
   const double ab2 = dot(ab, ab), ac2 = dot(ac, ac);
-  const Point2 u{(ac.y * ab2 - ab.y * ac2) / (2.0 * area2), (ab.x * ac2 - ac.x * ab2) / (2.0 * area2)};
-  center = a + u;
-  radius = std::sqrt(dot(u, u));  // not hypot: this runs once per triangle and hypot is slow
   const double conditioning = std::sqrt(ab2 * ac2) / std::abs(area2);
-  error = 64.0 * std::numeric_limits<double>::epsilon() * (std::abs(a.x) + std::abs(a.y) + radius * (1.0 + conditioning));
+  if (conditioning < 1e6) {
+    const Point2 u{(ac.y * ab2 - ab.y * ac2) / (2.0 * area2), (ab.x * ac2 - ac.x * ab2) / (2.0 * area2)};
+    center = a + u;
+    radius = std::sqrt(dot(u, u));  // not hypot: this runs once per triangle and hypot is slow
+    error = 64.0 * eps * (std::abs(a.x) + std::abs(a.y) + radius * (1.0 + conditioning));
+    return;
+  }
+  center = exact_circumcenter(a, b, c);
+  const Point2 u = center - a;
+  radius = std::sqrt(dot(u, u));
+  error = 4.0 * eps * (std::abs(center.x) + std::abs(center.y));
 }
 
 void insert_indexed(cgal::Delaunay& dt, std::span<const Point2> points) {

@@ -108,6 +108,15 @@ TEST(VoronoiLayer, TangentLineSideIsExactIncludingTies) {
   EXPECT_EQ(side_of_tangent_line(dv, 1, up, right), 0);
 }
 
+TEST(VoronoiLayer, CircumcentreIsFiniteWhenTheCrossProductRoundsToZero) {
+  // cross(ab, ac) = 1e-340 underflows to 0 in double; the exact centre is (-3.5, 4.5) * 1e-170.
+  const auto dv = build_delaunay_voronoi(std::vector<Point2>{{0, 0}, {1e-170, 1e-170}, {2e-170, 3e-170}});
+  ASSERT_EQ(dv.triangle_count(), 1);
+  EXPECT_DOUBLE_EQ(dv.circumcenters[0].x, -3.5e-170);
+  EXPECT_DOUBLE_EQ(dv.circumcenters[0].y, 4.5e-170);
+  EXPECT_TRUE(std::isfinite(dv.circumradii[0]) && std::isfinite(dv.circumcenter_errors[0]));
+}
+
 TEST(VoronoiLayer, ConvexHullMembership) {
   const auto dv = build_delaunay_voronoi(std::vector<Point2>{{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 1}});
   EXPECT_TRUE(in_convex_hull(dv, {2, 2}));

@@ -42,6 +42,7 @@ VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
   // Section 3.3: EVVs inside Conv(P) belong to convex portions (Lemma 5.1) and are inner;
   // a vertex on the hull boundary counts as inside. The others start the walks (Line 4).
   std::vector<int> queue;
+  std::vector<std::uint8_t> outside_hull(triangles, 0);
   for (int t = 0; t < triangles; ++t) {
     if (!has_hull_edge(dv, t)) continue;
     ++labels.extreme_vertices;
@@ -49,6 +50,7 @@ VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
       labels.inner[t] = 1;
     } else {
       queue.push_back(t);
+      outside_hull[t] = 1;
     }
   }
   labels.queued_vertices = static_cast<int>(queue.size());
@@ -72,19 +74,27 @@ VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
       if (visited[vertex]) continue;
       visited[vertex] = 1;
       ++labels.visited_vertices;
-      if (crosses_a_tangent_line(dv, labels, vertex)) {
+      // A vertex outside Conv(P) lies outside every polygon on the samples, so no tangent
+      // estimate can make it inner: this keeps one poor estimate (at a sharp tip, say) from
+      // closing off a whole neighbouring pseudo-concavity before its own walk starts.
+      if (!outside_hull[vertex] && crosses_a_tangent_line(dv, labels, vertex)) {
         // Reading note 2: the walk stops at a vertex that just became inner; walking on
         // would carry the outer label into the interior of the curve.
         labels.inner[vertex] = 1;
         continue;
       }
       // Algorithm 1, lines 1-2. Reached from an outer neighbour, a vertex shares two samples
-      // with it that are already paired, so at most one sample is unpaired; only a queue root
-      // can have more (its hull samples are paired with the infinite vertex), and every
-      // unpaired sample takes this vertex, the first outer vertex found in its cell, as source.
-      // A vertex whose samples are all paired pairs none and the walk goes on through it.
+      // with it that are already paired, so at most one sample is unpaired; it takes this
+      // vertex, the first outer vertex found in its cell, as source. A paired sample moves to
+      // this vertex if it is farther from the sample than its source: Lemma 3.2 wants the
+      // source to estimate the pole, the farthest vertex of the cell on the outer side, and a
+      // first vertex hugging the curve (the circumcentre of three samples around a sharp tip)
+      // would tilt the tangent line of Definition 5 by up to a right angle.
       for (int site : dv.triangles[vertex]) {
-        if (labels.source_vertex[site] == kUnpaired) labels.source_vertex[site] = vertex;
+        const int source = labels.source_vertex[site];
+        if (source == kUnpaired || (source >= 0 && dv.circumradii[vertex] > dv.circumradii[source])) {
+          labels.source_vertex[site] = vertex;
+        }
       }
       for (int k = 2; k >= 0; --k) {
         const int next = dv.neighbors[vertex][k];

@@ -33,10 +33,20 @@ benchmark="$CURVEBENCH_BUILD_DIR/harness/bench/curvebench_benchmark"
 
 out="${CURVEBENCH_OUT:-$CURVEBENCH_ROOT/out}"
 mkdir -p "$out"
-rm -rf "$out/results.jsonl" "$out/results.jsonl.inputs" "$out/gallery" "$out/report"
+rm -rf "$out/results.jsonl" "$out/results.jsonl.inputs" "$out/results-outlines.jsonl" "$out/results-outlines.jsonl.inputs" "$out/gallery" "$out/report"
 
 step "sweep $config"
 "$curvebench" sweep "$config" --out "$out/results.jsonl" --jobs 2
+
+# Figure 16 on real outlines: glyphs of the DejaVu font matplotlib ships, made here, never
+# stored in the repository. The config names them relative to the repository root.
+if [ "$config" = "$CURVEBENCH_ROOT/harness/configs/default.json" ]; then
+  step "real outlines (DejaVu Sans glyphs) and their sweep"
+  (cd "$CURVEBENCH_ROOT" && "$CURVEBENCH_VENV/bin/python" generators/real_outlines.py glyphs --out out/outlines >/dev/null &&
+    "$curvebench" sweep harness/configs/main_outlines.json --out "$out/results-outlines.jsonl" --jobs 2)
+  cat "$out/results-outlines.jsonl" >> "$out/results.jsonl"
+  rm -f "$out/results-outlines.jsonl"
+fi
 
 # Short: n = 10^3 ... 10^5, and a run predicted to take over 2 s is skipped (its row says so).
 # The full suite: curvebench_benchmark --max_n=10000000 (see harness/bench/scaling_benchmark.cpp).

@@ -29,6 +29,7 @@ struct SweepCommandOptions {
   bool resume = false;
   std::string shard = "0/1";
   double timeout = 0;
+  long memory_limit_mb = 8192;
   bool quiet = false;
 };
 
@@ -125,6 +126,7 @@ void run(const SweepCommandOptions& o) {
   options.parallel_jobs = o.jobs;
   options.resume = o.resume;
   options.timeout_seconds = o.timeout;
+  options.memory_limit_mb = o.memory_limit_mb;
   options.show_progress = !o.quiet;
   parse_shard(o.shard, options);
   const SweepSummary s = run_sweep(plan, options, environment);
@@ -143,6 +145,8 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--jobs,-j", o->jobs, "Runs at once, each in its own process")->capture_default_str()->check(CLI::PositiveNumber);
   cmd->add_flag("--resume", o->resume, "Skip runs that already have a row in the results file");
   cmd->add_option("--shard", o->shard, "Run only slice i of n (0 <= i < n): the runs whose index is i modulo n")->capture_default_str();
+  cmd->add_option("--memory-limit-mb", o->memory_limit_mb, "Resident memory per run before it is killed and recorded as a crash (0: no limit)")
+      ->default_val(8192);
   cmd->add_option("--timeout", o->timeout, "Seconds per run before it is killed (default: the config's timeout_seconds)")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--inputs", o->inputs, "Directory for the generated inputs (default: <out>.inputs)");

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <fstream>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -76,8 +77,16 @@ RunningChild start_child(int task, const std::function<std::string(int)>& work) 
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-ChildOutcome reap(RunningChild& child, bool timed_out) {
-  if (timed_out) ::kill(child.pid, SIGKILL);
+// Resident memory of a running child in kilobytes, from /proc (0 if it is already gone).
+long resident_kilobytes(pid_t pid) {
+  std::ifstream statm("/proc/" + std::to_string(pid) + "/statm");
+  long size_pages = 0, resident_pages = 0;
+  if (!(statm >> size_pages >> resident_pages)) return 0;
+  return resident_pages * (::sysconf(_SC_PAGESIZE) / 1024);
+}
+
+ChildOutcome reap(RunningChild& child, bool timed_out, long over_memory_limit_kilobytes) {
+  if (timed_out || over_memory_limit_kilobytes > 0) ::kill(child.pid, SIGKILL);
   int status = 0;
   rusage usage{};
   while (::wait4(child.pid, &status, 0, &usage) < 0) {
@@ -90,6 +99,9 @@ ChildOutcome reap(RunningChild& child, bool timed_out) {
   const bool exited_cleanly = WIFEXITED(status) && WEXITSTATUS(status) == 0 && !child.received.empty();
   if (timed_out) {
     outcome.ending = ChildOutcome::Ending::kTimedOut;
+  } else if (over_memory_limit_kilobytes > 0) {
+    outcome.ending = ChildOutcome::Ending::kCrashed;
+    outcome.failure = "killed: resident memory over the limit of " + std::to_string(over_memory_limit_kilobytes / 1024) + " MiB";
   } else if (exited_cleanly && child.received.front() == kReturned) {
     outcome.ending = ChildOutcome::Ending::kFinished;
     outcome.output = child.received.substr(1);
@@ -108,7 +120,7 @@ ChildOutcome reap(RunningChild& child, bool timed_out) {
 
 }  // namespace
 
-void run_in_child_processes(int task_count, int parallel_jobs, double timeout_seconds,
+void run_in_child_processes(int task_count, int parallel_jobs, double timeout_seconds, long memory_limit_kilobytes,
                             const std::function<std::string(int task)>& work,
                             const std::function<void(int task, const ChildOutcome& outcome)>& on_finish) {
   if (parallel_jobs < 1) throw std::invalid_argument("at least one job must run at a time");
@@ -123,6 +135,10 @@ void run_in_child_processes(int task_count, int parallel_jobs, double timeout_se
       double soonest = timeout_seconds;
       for (const auto& child : running) soonest = std::min(soonest, timeout_seconds - seconds_since(child.started));
       wait_milliseconds = static_cast<int>(std::ceil(std::max(0.0, soonest) * 1000.0));
+    }
+    if (memory_limit_kilobytes > 0) {
+      constexpr int kMemoryCheckMilliseconds = 50;
+      wait_milliseconds = wait_milliseconds < 0 ? kMemoryCheckMilliseconds : std::min(wait_milliseconds, kMemoryCheckMilliseconds);
     }
     std::vector<pollfd> watched;
     for (const auto& child : running) watched.push_back({child.pipe_read_end, POLLIN, 0});
@@ -139,8 +155,10 @@ void run_in_child_processes(int task_count, int parallel_jobs, double timeout_se
         finished = n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN);
       }
       const bool timed_out = !finished && timeout_seconds > 0 && seconds_since(child.started) >= timeout_seconds;
-      if (finished || timed_out) {
-        on_finish(child.task, reap(child, timed_out));
+      const bool over_memory = !finished && !timed_out && memory_limit_kilobytes > 0 &&
+                               resident_kilobytes(child.pid) > memory_limit_kilobytes;
+      if (finished || timed_out || over_memory) {
+        on_finish(child.task, reap(child, timed_out, over_memory ? memory_limit_kilobytes : 0));
       } else {
         still_running.push_back(std::move(child));
       }

@@ -2,7 +2,8 @@
 // hangs or exhausts memory takes only itself down.
 //
 // In:  the number of tasks, how many may run at once, a time limit per task (seconds; 0 for
-//      none), `work` (run in a forked child; returns the text to send back) and `on_finish`
+//      none), a resident-memory limit per task (kilobytes; 0 for none; checked every 50 ms,
+//      the child is killed and reported crashed when over it), `work` (run in a forked child; returns the text to send back) and `on_finish`
 //      (run in the parent, in completion order, once per task).
 // Out: for every task, through `on_finish`, how it ended: finished (`work` returned; its text
 //      is in `output`), crashed (killed by a signal, or exited without returning, e.g. an
@@ -28,7 +29,7 @@ struct ChildOutcome {
   double wall_seconds = 0.0;
 };
 
-void run_in_child_processes(int task_count, int parallel_jobs, double timeout_seconds,
+void run_in_child_processes(int task_count, int parallel_jobs, double timeout_seconds, long memory_limit_kilobytes,
                             const std::function<std::string(int task)>& work,
                             const std::function<void(int task, const ChildOutcome& outcome)>& on_finish);
 

@@ -122,7 +122,7 @@ std::vector<PreparedInput> prepare_inputs(const SweepPlan& plan, const std::set<
   }
   ProgressReport progress("inputs", static_cast<int>(order.size()), options.show_progress);
   run_in_child_processes(
-      static_cast<int>(order.size()), options.parallel_jobs, timeout,
+      static_cast<int>(order.size()), options.parallel_jobs, timeout, options.memory_limit_mb * 1024,
       [&](int task) {
         const PreparedInput& input = prepared[order[task]];
         try {
@@ -269,7 +269,7 @@ SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& options, const
 
   ProgressReport progress("runs", static_cast<int>(child_positions.size()), options.show_progress);
   run_in_child_processes(
-      static_cast<int>(child_positions.size()), options.parallel_jobs, timeout,
+      static_cast<int>(child_positions.size()), options.parallel_jobs, timeout, options.memory_limit_mb * 1024,
       [&](int task) {
         const SweepRun& run = plan.runs[selected[child_positions[task]]];
         return perform_run(plan, run, inputs[run.input], find_in(environment, run.algorithm));

@@ -50,6 +50,7 @@ struct SweepOptions {
   int shard_index = 0;
   int shard_count = 1;
   double timeout_seconds = 0;  // 0: the plan's
+  long memory_limit_mb = 8192;  // resident memory per run before it is killed (a crash row); 0: none
   bool show_progress = true;
 };
 

@@ -73,7 +73,20 @@ class HangingAlgorithm : public Algorithm {
   }
 };
 
+// Allocates and touches memory until it is stopped.
+class GreedyAlgorithm : public Algorithm {
+ public:
+  std::string name() const override { return "allocates"; }
+  std::string description() const override { return "test: allocates without bound"; }
+  unsigned outputs() const override { return kCurve; }
+  Reconstruction reconstruct(std::span<const Point2>, const Parameters&) const override {
+    std::vector<std::vector<char>> blocks;
+    for (;;) blocks.emplace_back(std::size_t{16} << 20, 'x');
+  }
+};
+
 const SquareAlgorithm kSquare;
+const GreedyAlgorithm kGreedy;
 const ThrowingAlgorithm kThrows;
 const AbortingAlgorithm kAborts;
 const HangingAlgorithm kHangs;
@@ -88,7 +101,7 @@ void write_square_input(const Json& settings, const std::string& points_path, co
   write_file_atomically(truth_path, ground_truth_to_json(truth).dump());
 }
 
-SweepEnvironment test_environment() { return {{&kSquare, &kThrows, &kAborts, &kHangs}, write_square_input}; }
+SweepEnvironment test_environment() { return {{&kSquare, &kThrows, &kAborts, &kHangs, &kGreedy}, write_square_input}; }
 
 class SweepTest : public ::testing::Test {
  protected:
@@ -145,8 +158,8 @@ TEST(SweepPlan, ExpandsListsIntoAGridInTheOrderWritten) {
 
 TEST(SweepPlan, AllMeansEveryAlgorithm) {
   const SweepPlan plan = plan_of(R"({"algorithms": "all", "inputs": [{"family": "square"}]})");
-  ASSERT_EQ(plan.runs.size(), 4u);
-  EXPECT_EQ(plan.runs[3].algorithm, "hangs");
+  ASSERT_EQ(plan.runs.size(), 5u);
+  EXPECT_EQ(plan.runs[4].algorithm, "allocates");
   EXPECT_EQ(plan.timeout_seconds, 60);
 }
 
@@ -200,6 +213,21 @@ TEST_F(SweepTest, EveryFailureBecomesARowWithItsStatusAndTheSweepGoesOn) {
   EXPECT_EQ(summary.errors, 6);
   EXPECT_EQ(summary.crashes, 1);
   EXPECT_EQ(summary.timeouts, 1);
+}
+
+TEST_F(SweepTest, AnAlgorithmThatAllocatesWithoutBoundIsKilledAndTheSweepGoesOn) {
+  SweepPlan plan = plan_of(R"({"algorithms": ["allocates", "square"], "inputs": [{"family": "square"}]})");
+  SweepOptions o = options("results.jsonl");
+  o.memory_limit_mb = 256;
+  o.timeout_seconds = 600;  // a safety net only: the memory limit ends the run long before
+  const SweepSummary summary = run_sweep(plan, o, test_environment());
+  const auto written = rows(o.results_path);
+  ASSERT_EQ(written.size(), 2u);
+  EXPECT_EQ(written[0]["status"], "crash");
+  EXPECT_NE(written[0]["message"].get<std::string>().find("memory over the limit of 256 MiB"), std::string::npos)
+      << written[0]["message"];
+  EXPECT_EQ(written[1]["status"], "ok");
+  EXPECT_EQ(summary.crashes, 1);
 }
 
 TEST_F(SweepTest, RowsAreTheSameEveryTimeApartFromMeasurements) {
@@ -265,7 +293,7 @@ TEST(RunInChildProcesses, ReportsEachEndingOnce) {
   std::vector<std::string> outputs(4);
   std::vector<int> calls(4, 0);
   run_in_child_processes(
-      4, 3, 2.0,  // only task 3 reaches the timeout: it never returns
+      4, 3, 2.0, 0,  // only task 3 reaches the timeout: it never returns
       [](int task) -> std::string {
         if (task == 1) throw std::runtime_error("thrown");
         if (task == 2) std::abort();

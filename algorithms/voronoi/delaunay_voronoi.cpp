@@ -91,6 +91,28 @@ int bare_delaunay_vertex_count(std::span<const Point2> points) {
   return static_cast<int>(dt.number_of_vertices());
 }
 
+std::vector<Edge> delaunay_edges_between_samples(std::span<const Point2> samples, std::span<const Point2> extra) {
+  std::vector<std::pair<cgal::Point, int>> indexed;
+  indexed.reserve(samples.size() + extra.size());
+  for (int i = 0; i < static_cast<int>(samples.size()); ++i) indexed.emplace_back(cgal::Point(samples[i].x, samples[i].y), i);
+  for (const auto& p : extra) indexed.emplace_back(cgal::Point(p.x, p.y), -1);
+  cgal::Delaunay dt;
+  dt.insert(indexed.begin(), indexed.end());
+  if (dt.number_of_vertices() < indexed.size()) {
+    // A duplicate's vertex carries whichever copy CGAL inserted last: give every sample's
+    // vertex back its index (inserting an existing point returns its vertex).
+    for (int i = 0; i < static_cast<int>(samples.size()); ++i) dt.insert(indexed[i].first)->info() = i;
+  }
+  indexed = {};
+  std::vector<Edge> edges;
+  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
+    const int a = e->first->vertex(cgal::Delaunay::cw(e->second))->info();
+    const int b = e->first->vertex(cgal::Delaunay::ccw(e->second))->info();
+    if (a >= 0 && b >= 0) edges.push_back(make_edge(a, b));
+  }
+  return edges;
+}
+
 DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points) {
   DelaunayVoronoi dv;
   const int n = static_cast<int>(points.size());

@@ -58,6 +58,12 @@ DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points);
 // insertion of point-and-index pairs), returning its vertex count: the benchmark's floor.
 int bare_delaunay_vertex_count(std::span<const Point2> points);
 
+// The Delaunay edges between two of `samples` in the triangulation of `samples` together with
+// `extra` points, without building the flat arrays (crust's second triangulation needs nothing
+// else). `samples` must be distinct; an extra point equal to a sample counts as that sample.
+// Edges index `samples`, each once, in no particular order.
+std::vector<Edge> delaunay_edges_between_samples(std::span<const Point2> samples, std::span<const Point2> extra);
+
 // Throws InputError, naming `algorithm`, unless the sites span the plane (three or more
 // distinct points, not all collinear): only then is there a closed curve to look for.
 void require_triangulation(const DelaunayVoronoi& dv, const std::string& algorithm);

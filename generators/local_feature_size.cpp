@@ -9,17 +9,6 @@
 namespace curvebench {
 namespace {
 
-double distance_to_segment(Point2 q, Point2 a, Point2 b) {
-  const Point2 ab = b - a;
-  const double length2 = dot(ab, ab);
-  const double t = length2 > 0 ? std::clamp(dot(q - a, ab) / length2, 0.0, 1.0) : 0.0;
-  return distance(q, a + t * ab);
-}
-
-}  // namespace
-
-namespace {
-
 // The measurement itself, at every vertex.
 std::vector<std::vector<double>> measure_local_feature_size(const std::vector<std::vector<Point2>>& polylines) {
   std::vector<Point2> all;

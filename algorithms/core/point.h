@@ -1,6 +1,7 @@
 // Plain geometry value types shared by every stage: a planar point and an index edge.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -19,6 +20,16 @@ inline double dot(Point2 a, Point2 b) { return a.x * b.x + a.y * b.y; }
 inline double cross(Point2 a, Point2 b) { return a.x * b.y - a.y * b.x; }
 inline double norm(Point2 a) { return std::hypot(a.x, a.y); }
 inline double distance(Point2 a, Point2 b) { return norm(a - b); }
+
+// The point of segment ab closest to p (a itself when the segment is a point).
+inline Point2 closest_point_on_segment(Point2 p, Point2 a, Point2 b) {
+  const Point2 ab = b - a;
+  const double length_squared = dot(ab, ab);
+  if (length_squared == 0.0) return a;
+  return a + std::clamp(dot(p - a, ab) / length_squared, 0.0, 1.0) * ab;
+}
+
+inline double distance_to_segment(Point2 p, Point2 a, Point2 b) { return distance(p, closest_point_on_segment(p, a, b)); }
 
 // An undirected edge between two point indices, stored with first < second.
 using Edge = std::array<int, 2>;

@@ -10,14 +10,6 @@
 namespace curvebench {
 namespace {
 
-double squared_distance_to_side(Point2 p, Point2 a, Point2 b) {
-  const Point2 side = b - a;
-  const double length_squared = dot(side, side);
-  const double t = length_squared > 0.0 ? std::clamp(dot(p - a, side) / length_squared, 0.0, 1.0) : 0.0;
-  const Point2 offset = p - (a + t * side);
-  return dot(offset, offset);
-}
-
 // The integral square error of one curve: `order` lists its samples along the curve.
 std::optional<double> curve_square_error(std::span<const Point2> samples, const std::vector<int>& order,
                                          const std::set<int>& dominant) {
@@ -33,7 +25,8 @@ std::optional<double> curve_square_error(std::span<const Point2> samples, const 
     const Point2 to = samples[order[next]];
     // The samples strictly after this corner and before the next one, wrapping around.
     for (size_t k = (corners[c] + 1) % order.size(); k != next; k = (k + 1) % order.size()) {
-      error += squared_distance_to_side(samples[order[k]], from, to);
+      const Point2 offset = samples[order[k]] - closest_point_on_segment(samples[order[k]], from, to);
+      error += dot(offset, offset);
     }
   }
   return error;

@@ -10,14 +10,6 @@
 namespace curvebench {
 namespace {
 
-double point_segment_distance(Point2 p, const Segment2& s) {
-  const Point2 direction = s.target - s.source;
-  const double length_squared = dot(direction, direction);
-  if (length_squared == 0.0) return distance(p, s.source);
-  const double t = std::clamp(dot(p - s.source, direction) / length_squared, 0.0, 1.0);
-  return distance(p, s.source + t * direction);
-}
-
 // Segments bucketed into the square cells of their bounding box that they pass through.
 class SegmentGrid {
  public:
@@ -54,7 +46,7 @@ class SegmentGrid {
         for (int w = row - r; w <= row + r; w += side_column ? 1 : 2 * std::max(r, 1)) {
           if (w < 0 || w >= rows_) continue;
           for (int index : cells_[static_cast<size_t>(w) * columns_ + c]) {
-            best = std::min(best, point_segment_distance(p, segments_[index]));
+            best = std::min(best, distance_to_segment(p, segments_[index].source, segments_[index].target));
           }
         }
       }

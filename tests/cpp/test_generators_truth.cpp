@@ -12,12 +12,6 @@
 namespace curvebench {
 namespace {
 
-double distance_to_segment(Point2 q, Point2 a, Point2 b) {
-  const Point2 ab = b - a;
-  const double t = std::clamp(dot(q - a, ab) / dot(ab, ab), 0.0, 1.0);
-  return distance(q, a + t * ab);
-}
-
 int components(const MedialAxis& axis) {
   std::vector<int> parent(axis.vertices.size());
   for (size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);

@@ -13,20 +13,19 @@
 namespace curvebench {
 namespace {
 
-using testing::point_segment_distance;
 
 // Symmetric Hausdorff distance between a medial axis (vertices and straight edges) and the
 // segment ab. Medial-axis side: distance to a segment is convex along a straight edge, so
 // the vertices attain the maximum. Segment side: dense points on ab against every edge.
 double hausdorff_to_segment(const MedialAxis& axis, Point2 a, Point2 b) {
   double worst = 0;
-  for (const auto& v : axis.vertices) worst = std::max(worst, point_segment_distance(v, a, b));
+  for (const auto& v : axis.vertices) worst = std::max(worst, distance_to_segment(v, a, b));
   for (int k = 0; k <= 2000; ++k) {
     const Point2 q = a + (k / 2000.0) * (b - a);
     double nearest = std::numeric_limits<double>::max();
     for (const auto& v : axis.vertices) nearest = std::min(nearest, distance(q, v));
     for (const auto& e : axis.edges) {
-      nearest = std::min(nearest, point_segment_distance(q, axis.vertices[e[0]], axis.vertices[e[1]]));
+      nearest = std::min(nearest, distance_to_segment(q, axis.vertices[e[0]], axis.vertices[e[1]]));
     }
     worst = std::max(worst, nearest);
   }

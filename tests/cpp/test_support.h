@@ -87,11 +87,4 @@ inline int cyclic_distance(int a, int b, int n) {
   return std::min(d, n - d);
 }
 
-inline double point_segment_distance(Point2 p, Point2 a, Point2 b) {
-  const Point2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return distance(p, a + t * ab);
-}
-
 }  // namespace curvebench::testing

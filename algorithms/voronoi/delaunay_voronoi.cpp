@@ -56,24 +56,40 @@ Point2 exact_circumcenter(Point2 a, Point2 b, Point2 c) {
 // Circumcentre, circumradius and a bound on the centre's absolute rounding error, with a
 // wide margin: the formula loses about |ab||ac| / |cross(ab, ac)| in relative precision.
 // A nearly flat triangle (three samples along a straight stretch) would lose every digit, or
-// divide by a cross product that rounds to zero, so its centre is computed exactly instead.
+// divide by a cross product that rounds to zero. Along a densely sampled curve a fifth of
+// the triangles are that flat (the conditioning grows like the curvature radius over the
+// sample spacing), so they go to the 64-bit mantissa of x87 long double where the platform
+// has one (2^11 times more precise, about 10x cheaper than rationals), and only the flattest
+// to exact rational arithmetic.
+template <class Real>
+bool float_circumcircle(Point2 a, Point2 b, Point2 c, Point2& center, double& radius, double& error) {
+  constexpr Real eps = std::numeric_limits<Real>::epsilon();
+  constexpr Real max_conditioning = 1e-10 / eps;  // keeps the relative error of the centre below ~1e-8
+  const Real abx = Real(b.x) - a.x, aby = Real(b.y) - a.y, acx = Real(c.x) - a.x, acy = Real(c.y) - a.y;
+  const Real area2 = abx * acy - aby * acx;
+  const Real ab2 = abx * abx + aby * aby, ac2 = acx * acx + acy * acy;
+  const Real conditioning = std::sqrt(ab2 * ac2) / std::abs(area2);
+  if (!(conditioning < max_conditioning)) return false;
+  const Real ux = (acy * ab2 - aby * ac2) / (2 * area2), uy = (abx * ac2 - acx * ab2) / (2 * area2);
+  center = {static_cast<double>(a.x + ux), static_cast<double>(a.y + uy)};
+  const Real r = std::sqrt(ux * ux + uy * uy);  // not hypot: this runs once per triangle and hypot is slow
+  radius = static_cast<double>(r);
+  constexpr double double_eps = std::numeric_limits<double>::epsilon();
+  // The computation's own error, plus rounding the results to double.
+  error = static_cast<double>(64 * eps * (std::abs(a.x) + std::abs(a.y) + r * (1 + conditioning))) +
+          4 * double_eps * (std::abs(center.x) + std::abs(center.y));
+  return true;
+}
+
 void circumcircle(Point2 a, Point2 b, Point2 c, Point2& center, double& radius, double& error) {
-  constexpr double eps = std::numeric_limits<double>::epsilon();
-  const Point2 ab = b - a, ac = c - a;
-  const double area2 = cross(ab, ac);
-  const double ab2 = dot(ab, ab), ac2 = dot(ac, ac);
-  const double conditioning = std::sqrt(ab2 * ac2) / std::abs(area2);
-  if (conditioning < 1e6) {
-    const Point2 u{(ac.y * ab2 - ab.y * ac2) / (2.0 * area2), (ab.x * ac2 - ac.x * ab2) / (2.0 * area2)};
-    center = a + u;
-    radius = std::sqrt(dot(u, u));  // not hypot: this runs once per triangle and hypot is slow
-    error = 64.0 * eps * (std::abs(a.x) + std::abs(a.y) + radius * (1.0 + conditioning));
-    return;
+  if (float_circumcircle<double>(a, b, c, center, radius, error)) return;
+  if constexpr (std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits) {
+    if (float_circumcircle<long double>(a, b, c, center, radius, error)) return;
   }
   center = exact_circumcenter(a, b, c);
   const Point2 u = center - a;
   radius = std::sqrt(dot(u, u));
-  error = 4.0 * eps * (std::abs(center.x) + std::abs(center.y));
+  error = 4.0 * std::numeric_limits<double>::epsilon() * (std::abs(center.x) + std::abs(center.y));
 }
 
 void insert_indexed(cgal::Delaunay& dt, std::span<const Point2> points) {

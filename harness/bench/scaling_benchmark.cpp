@@ -9,8 +9,10 @@
 //
 // Counters of each row:
 //   ns_per_point                 time per point
-//   x_delaunay                   time over the bare Delaunay time of the same input and n,
-//                                measured earlier in this run (the Delaunay family runs first)
+//   x_delaunay                   time over the bare Delaunay time of the same points, timed
+//                                just before every iteration of the algorithm: paired this
+//                                way, the ratio holds while the machine's speed drifts (a
+//                                shared host slows both alike), which separate rows do not
 //   after_delaunay_ns_per_point  time per point of the phases after the algorithm's own
 //                                "delaunay" phase: the CPU time times the share of the
 //                                wall-clock phase times (Reconstruction::timing_ms) after it
@@ -200,11 +202,6 @@ std::map<std::pair<std::string, std::string>, std::map<int, Run>>& runs() {
   return by_algorithm_and_input;
 }
 
-std::map<std::pair<std::string, int>, double>& delaunay_seconds() {  // by (input, n), from this run
-  static std::map<std::pair<std::string, int>, double> seconds;
-  return seconds;
-}
-
 // Why the run at n should not start, judged from the same algorithm and input at the largest
 // smaller n; or empty.
 std::string reason_to_skip(const std::map<int, Run>& sizes, int n) {
@@ -228,9 +225,9 @@ std::string reason_to_skip(const std::map<int, Run>& sizes, int n) {
 }
 
 // Runs `algorithm` on `input` at the benchmark's n: skip check and peak memory in a child
-// process (first call for this n only), then the timed iterations; a Delaunay run becomes
-// the floor of its input and n. Returns the mean CPU seconds per iteration, or nothing if
-// the run was skipped.
+// process (first call for this n only), then the timed iterations, each after an untimed
+// bare Delaunay construction of the same points that is the iteration's floor. Returns the
+// mean CPU seconds per iteration, or nothing if the run was skipped.
 template <typename Reconstruct>
 std::optional<double> time_run(benchmark::State& state, const std::string& algorithm, const std::string& input,
                                Reconstruct&& reconstruct) {
@@ -251,8 +248,14 @@ std::optional<double> time_run(benchmark::State& state, const std::string& algor
     return std::nullopt;
   }
   const auto& points = current_points(input, n);
-  double total = 0.0;
+  const bool paired = algorithm != "delaunay";
+  double total = 0.0, delaunay_total = 0.0;
   for (auto _ : state) {
+    if (paired) {
+      const double start = thread_cpu_seconds();
+      benchmark::DoNotOptimize(bare_delaunay_vertex_count(points));
+      delaunay_total += thread_cpu_seconds() - start;
+    }
     const double start = thread_cpu_seconds();
     reconstruct(points);
     const double seconds = thread_cpu_seconds() - start;
@@ -260,12 +263,10 @@ std::optional<double> time_run(benchmark::State& state, const std::string& algor
     total += seconds;
   }
   run.seconds = total / static_cast<double>(state.iterations());
-  if (algorithm == "delaunay") delaunay_seconds()[{input, n}] = run.seconds;
   state.counters["ns_per_point"] = 1e9 * run.seconds / n;
   state.counters["peak_MiB"] = run.memory.peak_mib;
   state.counters["input_MiB"] = run.memory.input_mib;
-  const auto floor = delaunay_seconds().find({input, n});
-  if (floor != delaunay_seconds().end()) state.counters["x_delaunay"] = run.seconds / floor->second;
+  state.counters["x_delaunay"] = paired ? total / delaunay_total : 1.0;
   return run.seconds;
 }
 
@@ -327,7 +328,7 @@ int main(int argc, char** argv) {
   if (const auto run = take_flag(argc, argv, "peak_memory_child")) return run_peak_memory_child(*run);
   if (const auto value = take_flag(argc, argv, "max_n")) settings().max_n = std::stoll(*value);
   if (const auto value = take_flag(argc, argv, "max_run_seconds")) settings().max_run_seconds = std::stod(*value);
-  // Delaunay first at every n, so each algorithm's ratio uses this run's floor.
+  // The bare construction's own rows first: the floor in ns per point.
   for (const auto& input : kInputs) {
     apply_sizes(benchmark::RegisterBenchmark(("delaunay/" + input).c_str(), BM_Delaunay, input));
   }

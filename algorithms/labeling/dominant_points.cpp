@@ -17,25 +17,20 @@ Point2 hull_edge_outward_normal(const DelaunayVoronoi& dv, int site, int triangl
 
 }  // namespace
 
-std::vector<int> detect_dominant_points(const DelaunayVoronoi& dv, const VoronoiLabels& labels) {
+std::vector<int> detect_dominant_points(const DelaunayVoronoi& dv, const VoronoiLabels& labels,
+                                        std::span<const Edge> curve_edges) {
   // Consecutive vertices of a cell are the two ends of the Voronoi edge dual to a Delaunay
-  // edge of the site, so the label changes around a cell are its mixed (curve) edges. With
-  // two changes there are two runs and a run of length one means a label occurs once; only
+  // edge of the site, so the label changes around a cell are its curve edges. With two
+  // changes there are two runs and a run of length one means a label occurs once; only
   // cells where that holds, or with more changes, need the walk below.
   const int sites = dv.site_count();
   std::vector<int> inner_count(sites, 0), outer_count(sites, 0), changes(sites, 0);
   for (int site = 0; site < sites; ++site) outer_count[site] = dv.on_hull[site];  // the infinite vertex
   for (int t = 0; t < dv.triangle_count(); ++t) {
-    const auto& tri = dv.triangles[t];
     auto& count = labels.inner[t] ? inner_count : outer_count;
-    for (int site : tri) ++count[site];
-    for (int k = 0; k < 3; ++k) {
-      const int other = dv.neighbors[t][k];
-      if (other != kInfinite && other < t) continue;
-      const bool other_inner = other != kInfinite && labels.inner[other];
-      if (labels.inner[t] != other_inner) ++changes[tri[(k + 1) % 3]], ++changes[tri[(k + 2) % 3]];
-    }
+    for (int site : dv.triangles[t]) ++count[site];
   }
+  for (const auto& e : curve_edges) ++changes[e[0]], ++changes[e[1]];
 
   std::vector<int> dominant;
   std::vector<int> cell;

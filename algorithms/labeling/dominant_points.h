@@ -1,7 +1,8 @@
 // Section 3.4: dominant points (high-curvature samples) from the labeling patterns on
 // Voronoi cells.
 //
-// In:  Delaunay/Voronoi arrays and the final vertex labels.
+// In:  Delaunay/Voronoi arrays, the final vertex labels and the curve edges they give
+//      (extract_curve_edges, site indices).
 // Out: the sites whose Voronoi cell, read cyclically, has an IOI or OIO pattern (a single
 //      vertex whose label differs from both its neighbours along the cell boundary) that
 //      passes the paper's filter: with c the central vertex, both terminal vertices lie
@@ -15,12 +16,14 @@
 // every hull sample with two or more finite vertices would otherwise show IOI.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "labeling/label_voronoi_vertices.h"
 
 namespace curvebench {
 
-std::vector<int> detect_dominant_points(const DelaunayVoronoi& dv, const VoronoiLabels& labels);
+std::vector<int> detect_dominant_points(const DelaunayVoronoi& dv, const VoronoiLabels& labels,
+                                        std::span<const Edge> curve_edges);
 
 }  // namespace curvebench

@@ -26,9 +26,10 @@ class Labeling final : public Algorithm {
     timer.lap("labeling");
     Reconstruction result;
     result.distinct_points = dv.site_count();
-    result.curve_edges = to_input_indices(dv, extract_curve_edges(dv, labels));
+    std::vector<Edge> curve = extract_curve_edges(dv, labels);
+    std::vector<int> dominant = detect_dominant_points(dv, labels, curve);
+    result.curve_edges = to_input_indices(dv, std::move(curve));
     result.medial_axis = extract_interior_medial_axis(dv, labels);
-    std::vector<int> dominant = detect_dominant_points(dv, labels);
     for (int& site : dominant) site = dv.input_of_site[site];
     result.dominant_points = std::move(dominant);
     timer.lap("extract");

@@ -28,34 +28,58 @@ MedialAxis voronoi_subgraph(const DelaunayVoronoi& dv, std::span<const std::uint
     const int other = dv.neighbors[t][k];
     return other != kInfinite && other > t && keep[t] && keep[other] && keep_edge(t, k);
   };
+  auto coinciding = [&](int t, int k) {  // the kept edge opposite corner k of t has length zero
+    const int other = dv.neighbors[t][k];
+    const Point2 gap = dv.circumcenters[t] - dv.circumcenters[other];
+    const double tolerance = dv.circumcenter_errors[t] + dv.circumcenter_errors[other];
+    return dot(gap, gap) <= tolerance * tolerance && is_degenerate_voronoi_edge(dv, t, k);
+  };
+
+  // One vertex per kept triangle and one edge per kept Voronoi edge, unless two vertices coincide.
+  MedialAxis axis;
+  const auto kept = static_cast<std::size_t>(std::count_if(keep.begin(), keep.end(), [](std::uint8_t k) { return k != 0; }));
+  axis.vertices.reserve(kept);
+  axis.radii.reserve(kept);
+  axis.edges.reserve(kept + kept / 2);
+  std::vector<int> vertex_of(triangles, -1);
+  for (int t = 0; t < triangles; ++t) {
+    if (!keep[t]) continue;
+    vertex_of[t] = static_cast<int>(axis.vertices.size());
+    axis.vertices.push_back(dv.circumcenters[t]);
+    axis.radii.push_back(dv.circumradii[t]);
+  }
+  bool any_coinciding = false;
+  for (int t = 0; t < triangles && !any_coinciding; ++t) {
+    for (int k = 0; k < 3; ++k) {
+      if (!kept_edge(t, k)) continue;
+      if (coinciding(t, k)) {
+        any_coinciding = true;
+        break;
+      }
+      axis.edges.push_back(make_edge(vertex_of[t], vertex_of[dv.neighbors[t][k]]));
+    }
+  }
+  if (!any_coinciding) return axis;
+
+  // Co-circular sites: merge the classes of coinciding vertices (union-find over triangles).
   auto find_root = [](std::vector<int>& parent, int x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-
-  std::vector<int> parent;  // union-find over triangles, built only if anything coincides
+  std::vector<int> parent(triangles);
+  std::iota(parent.begin(), parent.end(), 0);
   for (int t = 0; t < triangles; ++t) {
     for (int k = 0; k < 3; ++k) {
-      if (!kept_edge(t, k)) continue;
-      const int other = dv.neighbors[t][k];
-      const Point2 gap = dv.circumcenters[t] - dv.circumcenters[other];
-      const double tolerance = dv.circumcenter_errors[t] + dv.circumcenter_errors[other];
-      if (dot(gap, gap) > tolerance * tolerance || !is_degenerate_voronoi_edge(dv, t, k)) continue;
-      if (parent.empty()) {
-        parent.resize(triangles);
-        std::iota(parent.begin(), parent.end(), 0);
-      }
-      const int a = find_root(parent, t), b = find_root(parent, other);
+      if (!kept_edge(t, k) || !coinciding(t, k)) continue;
+      const int a = find_root(parent, t), b = find_root(parent, dv.neighbors[t][k]);
       parent[std::max(a, b)] = std::min(a, b);  // the smallest triangle represents its class
     }
   }
-  const bool merged = !parent.empty();
-
-  MedialAxis axis;
-  std::vector<int> vertex_of(triangles, -1);
+  axis = {};
+  std::fill(vertex_of.begin(), vertex_of.end(), -1);
   for (int t = 0; t < triangles; ++t) {
     if (!keep[t]) continue;
-    const int root = merged ? find_root(parent, t) : t;
+    const int root = find_root(parent, t);
     if (vertex_of[root] < 0) {
       vertex_of[root] = static_cast<int>(axis.vertices.size());
       axis.vertices.push_back(dv.circumcenters[root]);
@@ -70,10 +94,9 @@ MedialAxis voronoi_subgraph(const DelaunayVoronoi& dv, std::span<const std::uint
       if (a != b) axis.edges.push_back(make_edge(a, b));
     }
   }
-  if (merged) {  // merged classes can be joined by more than one Voronoi edge
-    std::sort(axis.edges.begin(), axis.edges.end());
-    axis.edges.erase(std::unique(axis.edges.begin(), axis.edges.end()), axis.edges.end());
-  }
+  // Merged classes can be joined by more than one Voronoi edge.
+  std::sort(axis.edges.begin(), axis.edges.end());
+  axis.edges.erase(std::unique(axis.edges.begin(), axis.edges.end()), axis.edges.end());
   return axis;
 }
 

@@ -68,7 +68,7 @@ TEST(Labeling, EveryDominantPointShowsALabelPatternOnItsCell) {
   const auto points = sample_polygon_evenly(star_polygon(0.6), 200);
   const auto dv = build_delaunay_voronoi(points);
   const auto labels = label_voronoi_vertices(dv);
-  const auto dominant = detect_dominant_points(dv, labels);
+  const auto dominant = detect_dominant_points(dv, labels, extract_curve_edges(dv, labels));
   ASSERT_FALSE(dominant.empty());
   std::vector<int> cell;
   for (int site : dominant) {
@@ -89,7 +89,9 @@ TEST(Labeling, LabelsAreConsistentWithEveryOutput) {
   for (int s = 0; s < dv.site_count(); ++s) {
     const int source = labels.source_vertex[s];
     ASSERT_NE(source, kUnpaired) << "sample " << s;
-    if (source != kInfinite) EXPECT_FALSE(labels.inner[source]);
+    if (source != kInfinite) {
+      EXPECT_FALSE(labels.inner[source]);
+    }
   }
   // The medial axis is exactly the inner vertices (before merging none coincide here).
   const auto axis = extract_interior_medial_axis(dv, labels);

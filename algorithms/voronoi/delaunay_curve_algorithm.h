@@ -1,5 +1,5 @@
 // An algorithm whose whole output is a curve computed from the Delaunay/Voronoi arrays of the
-// input (crust, NN-crust): it supplies its name, description and edge function; this class
+// input (NN-crust): it supplies its name, description and edge function; this class
 // builds the triangulation, refuses input without a closed curve, times the two phases
 // ("delaunay", then the algorithm's own) and maps sites back to input indices.
 #pragma once

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "core/phase_timer.h"
 #include "core/point.h"
 
 namespace curvebench {
@@ -54,15 +55,23 @@ struct DelaunayVoronoi {
 
 DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points);
 
-// The bare CGAL Delaunay construction that build_delaunay_voronoi starts with (range
-// insertion of point-and-index pairs), returning its vertex count: the benchmark's floor.
+// The benchmark's floor: CGAL's documented range insertion of (point, index) pairs, the
+// fastest documented way to a triangulation whose vertices know their input index. Returns
+// its vertex count. build_delaunay_voronoi builds the same triangulation 10-20% faster by
+// sorting the pairs themselves instead of indices to them (see insert_in_spatial_order).
 int bare_delaunay_vertex_count(std::span<const Point2> points);
 
-// The Delaunay edges between two of `samples` in the triangulation of `samples` together with
-// `extra` points, without building the flat arrays (crust's second triangulation needs nothing
-// else). `samples` must be distinct; an extra point equal to a sample counts as that sample.
-// Edges index `samples`, each once, in no particular order.
-std::vector<Edge> delaunay_edges_between_samples(std::span<const Point2> samples, std::span<const Point2> extra);
+// The crust's triangulation (Amenta, Bern, Eppstein 1998): the Delaunay edges between two
+// sites in the triangulation of the sites together with all their Voronoi vertices, as site
+// pairs, each once, in no particular order. `sites` receives the site fields of
+// build_delaunay_voronoi (sites, input_of_site, site_of_input, dimension) and nothing else;
+// below dimension 2 there are no edges. No triangle arrays are built: the Voronoi vertices
+// are read straight off the sites' CGAL triangulation. A Voronoi vertex equal to a site counts as that site; one whose computed
+// position is not finite (a hull triangle flat to rounding, its centre beyond the range of
+// doubles) is left out: its only effect would be on hull edges. `timer` laps "delaunay"
+// once the sites are triangulated.
+std::vector<Edge> delaunay_edges_with_voronoi_vertices(std::span<const Point2> points, DelaunayVoronoi& sites,
+                                                      PhaseTimer& timer);
 
 // Throws InputError, naming `algorithm`, unless the sites span the plane (three or more
 // distinct points, not all collinear): only then is there a closed curve to look for.

@@ -4,7 +4,7 @@
 
 #include "baseline_families.h"
 #include "core/registry.h"
-#include "crust/crust_edges.h"
+#include "voronoi/delaunay_voronoi.h"
 #include "test_support.h"
 
 namespace curvebench {
@@ -45,7 +45,10 @@ TEST(Crust, EdgesAreDelaunayEdgesOfTheSamples) {
     for (int k = 0; k < 3; ++k) delaunay.push_back(make_edge(tri[k], tri[(k + 1) % 3]));
   }
   std::sort(delaunay.begin(), delaunay.end());
-  for (const Edge& e : crust_edges(dv)) EXPECT_TRUE(std::binary_search(delaunay.begin(), delaunay.end(), e));
+  PhaseTimer timer;
+  DelaunayVoronoi sites;
+  const auto crust = delaunay_edges_with_voronoi_vertices(samples.points, sites, timer);
+  for (const Edge& e : crust) EXPECT_TRUE(std::binary_search(delaunay.begin(), delaunay.end(), e));
 }
 
 TEST(Crust, RefusesInputWithoutAClosedCurve) {

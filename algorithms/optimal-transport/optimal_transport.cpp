@@ -4,9 +4,11 @@
 #include <CGAL/Optimal_transportation_reconstruction_2.h>
 
 #include <algorithm>
+#include <exception>
 #include <cmath>
 #include <iterator>
 #include <limits>
+#include <thread>
 
 #include "core/phase_timer.h"
 #include "voronoi/delaunay_voronoi.h"
@@ -85,20 +87,33 @@ class OptimalTransport final : public Algorithm {
     std::vector<Kernel::Point_2> sites;
     sites.reserve(dv.sites.size());
     for (const auto& p : dv.sites) sites.emplace_back(p.x, p.y);
-    Otr otr(sites);
-    otr.set_relocation(static_cast<unsigned>(relocation));
-    otr.set_use_flip(flip == 1.0);
-    if (vertices > 0) {
-      otr.run_until(static_cast<std::size_t>(vertices));
-    } else {
-      otr.run_under_wasserstein_tolerance(tolerance * mean_nearest_spacing(dv));
-    }
-    timer.lap("optimal_transport");
-
-    // list_output rather than CGAL's indexed_output, which is quadratic in the output size.
+    // CGAL's reconstruction orders some of its triangulation's elements by address, so its
+    // output depended on the heap it started with: a sweep's row and `reconstruct` on the same
+    // file differed whenever the process had made other allocations first (a longer path in a
+    // spec was enough). A new thread gets a new malloc arena, empty whatever the process did
+    // before, so the output depends on the input alone.
     std::vector<Kernel::Point_2> isolated;
     std::vector<Kernel::Segment_2> segments;
-    otr.list_output(std::back_inserter(isolated), std::back_inserter(segments));
+    std::exception_ptr failure;
+    std::thread([&] {
+      try {
+        Otr otr(sites);
+        otr.set_relocation(static_cast<unsigned>(relocation));
+        otr.set_use_flip(flip == 1.0);
+        if (vertices > 0) {
+          otr.run_until(static_cast<std::size_t>(vertices));
+        } else {
+          otr.run_under_wasserstein_tolerance(tolerance * mean_nearest_spacing(dv));
+        }
+        // list_output rather than CGAL's indexed_output, which is quadratic in the output size.
+        otr.list_output(std::back_inserter(isolated), std::back_inserter(segments));
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    }).join();
+    if (failure) std::rethrow_exception(failure);
+    timer.lap("optimal_transport");
+
     std::vector<Point2> out;
     for (const auto& p : isolated) out.push_back({p.x(), p.y()});
     for (const auto& s : segments) {

@@ -14,6 +14,7 @@
 
 #include "cli/commands.h"
 #include "core/registry.h"
+#include "sweep/run_in_child_processes.h"
 #include "sweep/run_sweep.h"
 
 namespace curvebench {
@@ -89,6 +90,18 @@ void generate_with_this_executable(const Json& settings, const std::string& poin
   throw std::runtime_error(message.empty() ? "curvebench generate failed" : message);
 }
 
+// Replaces this process with this executable's hidden `sweep-run` subcommand for one run.
+void exec_sweep_run(const std::string& spec) {
+  const char* argv[] = {"curvebench", "sweep-run", spec.c_str(), nullptr};
+  ::execv("/proc/self/exe", const_cast<char* const*>(argv));
+}
+
+std::vector<const Algorithm*> registered_algorithms() {
+  std::vector<const Algorithm*> algorithms;
+  for (const auto& algorithm : all_algorithms()) algorithms.push_back(algorithm.get());
+  return algorithms;
+}
+
 void parse_shard(const std::string& text, SweepOptions& options) {
   const size_t slash = text.find('/');
   try {
@@ -112,8 +125,9 @@ void run(const SweepCommandOptions& o) {
     throw std::runtime_error(o.config + ": not JSON: " + e.what());
   }
   SweepEnvironment environment;
-  for (const auto& algorithm : all_algorithms()) environment.algorithms.push_back(algorithm.get());
+  environment.algorithms = registered_algorithms();
   environment.generate_input = generate_with_this_executable;
+  environment.start_fresh_process = exec_sweep_run;
   SweepPlan plan;
   try {
     plan = plan_sweep(config, environment.algorithms);
@@ -152,6 +166,12 @@ void add_sweep_command(CLI::App& app) {
   cmd->add_option("--inputs", o->inputs, "Directory for the generated inputs (default: <out>.inputs)");
   cmd->add_flag("--quiet,-q", o->quiet, "No progress on stderr");
   cmd->callback([o] { run(*o); });
+
+  // One run of a sweep, in a fresh process: what `sweep` starts for every run. Hidden from help.
+  auto spec = std::make_shared<std::string>();
+  auto* one = app.add_subcommand("sweep-run", "One run of a sweep (started by sweep)")->group("");
+  one->add_option("spec", *spec, "The run, as JSON")->required();
+  one->callback([spec] { report_child_result([&] { return perform_sweep_run(*spec, registered_algorithms()); }); });
 }
 
 }  // namespace curvebench

@@ -60,15 +60,9 @@ RunningChild start_child(int task, const std::function<std::string(int)>& work) 
   if (pid == 0) {
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // do not outlive an interrupted sweep
     ::close(ends[0]);
-    std::string message;
-    try {
-      message = kReturned + work(task);
-    } catch (const std::exception& e) {
-      message = std::string(1, kThrew) + e.what();
-    } catch (...) {
-      message = std::string(1, kThrew) + "an exception that is not a std::exception";
-    }
-    write_fully(ends[1], message);
+    ::dup2(ends[1], STDOUT_FILENO);  // without O_CLOEXEC: a program exec'd by `work` inherits it
+    ::close(ends[1]);
+    report_child_result([&] { return work(task); });
     ::_exit(0);  // skip the parent's atexit handlers and static destructors
   }
   ::close(ends[1]);
@@ -119,6 +113,19 @@ ChildOutcome reap(RunningChild& child, bool timed_out, long over_memory_limit_ki
 }
 
 }  // namespace
+
+void report_child_result(const std::function<std::string()>& work) {
+  std::string message;
+  try {
+    message = kReturned + work();
+  } catch (const std::exception& e) {
+    message = std::string(1, kThrew) + e.what();
+  } catch (...) {
+    message = std::string(1, kThrew) + "an exception that is not a std::exception";
+  }
+  std::cout.flush();  // nothing else may follow on the pipe
+  write_fully(STDOUT_FILENO, message);
+}
 
 void run_in_child_processes(int task_count, int parallel_jobs, double timeout_seconds, long memory_limit_kilobytes,
                             const std::function<std::string(int task)>& work,

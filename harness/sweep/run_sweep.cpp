@@ -166,13 +166,13 @@ Json row_header(const SweepPlan& plan, const SweepRun& run, const PreparedInput&
   return row;
 }
 
-// In the child: reconstruct, evaluate, and return the row so far.
-std::string perform_run(const SweepPlan& plan, const SweepRun& run, const PreparedInput& input, const Algorithm& algorithm) {
-  Json row = row_header(plan, run, input);
-  const std::vector<Point2> points = read_points_file(input.points_path);
-  const GroundTruth truth = read_ground_truth_file(input.truth_path);
+// In the child: reconstruct, evaluate, and return the row so far, which starts as `header`.
+std::string perform_run(Json row, const Json& run_parameters, const std::string& points_path, const std::string& truth_path,
+                        const Algorithm& algorithm) {
+  const std::vector<Point2> points = read_points_file(points_path);
+  const GroundTruth truth = read_ground_truth_file(truth_path);
   Parameters parameters;
-  for (const auto& [name, value] : run.parameters.items()) parameters[name] = value.get<double>();
+  for (const auto& [name, value] : run_parameters.items()) parameters[name] = value.get<double>();
   Reconstruction result;
   try {
     result = algorithm.reconstruct(points, parameters);
@@ -199,14 +199,21 @@ std::string perform_run(const SweepPlan& plan, const SweepRun& run, const Prepar
   return row.dump();
 }
 
-const Algorithm& find_in(const SweepEnvironment& environment, const std::string& name) {
-  for (const Algorithm* algorithm : environment.algorithms) {
+const Algorithm& find_in(const std::vector<const Algorithm*>& algorithms, const std::string& name) {
+  for (const Algorithm* algorithm : algorithms) {
     if (algorithm->name() == name) return *algorithm;
   }
   throw std::runtime_error("sweep: unknown algorithm '" + name + "'");
 }
 
 }  // namespace
+
+std::string perform_sweep_run(const std::string& spec, const std::vector<const Algorithm*>& algorithms) {
+  const Json run = Json::parse(spec);
+  const Json& row = run.at("row");
+  return perform_run(row, run.at("parameters"), run.at("points").get<std::string>(), run.at("truth").get<std::string>(),
+                     find_in(algorithms, row.at("algorithm").get<std::string>()));
+}
 
 SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& options, const SweepEnvironment& environment) {
   const Clock::time_point start = Clock::now();
@@ -272,7 +279,17 @@ SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& options, const
       static_cast<int>(child_positions.size()), options.parallel_jobs, timeout, options.memory_limit_mb * 1024,
       [&](int task) {
         const SweepRun& run = plan.runs[selected[child_positions[task]]];
-        return perform_run(plan, run, inputs[run.input], find_in(environment, run.algorithm));
+        const PreparedInput& input = inputs[run.input];
+        if (environment.start_fresh_process) {
+          environment.start_fresh_process(Json{{"row", row_header(plan, run, input)},
+                                               {"parameters", run.parameters},
+                                               {"points", input.points_path},
+                                               {"truth", input.truth_path}}
+                                              .dump());
+          throw std::runtime_error("sweep: cannot start a fresh process for the run");
+        }
+        return perform_run(row_header(plan, run, input), run.parameters, input.points_path, input.truth_path,
+                           find_in(environment.algorithms, run.algorithm));
       },
       [&](int task, const ChildOutcome& outcome) {
         const size_t position = child_positions[task];

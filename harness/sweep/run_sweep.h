@@ -40,7 +40,20 @@ struct SweepEnvironment {
   // throws with a one-line message if it cannot. Called in a child process.
   std::function<void(const nlohmann::ordered_json& settings, const std::string& points_path, const std::string& truth_path)>
       generate_input;
+  // If set, every run takes place in a fresh process rather than in the forked copy of the
+  // sweep: called in the child with the run's spec, it must replace the process image (exec)
+  // with a program that reports perform_sweep_run(spec) through report_child_result
+  // (run_in_child_processes.h); it returns only if it cannot. An algorithm may depend on the
+  // state of the heap it starts with (CGAL's optimal-transport reconstruction did: 23 of 648
+  // rows differed between two identical sweeps of forked copies; see optimal_transport.cpp),
+  // and a fresh process starts every run from the same state.
+  std::function<void(const std::string& spec)> start_fresh_process;
 };
+
+// One run as a fresh process performs it: `spec` is the JSON text start_fresh_process is
+// given (the row so far, the run's parameters and the paths of its input); returns the row
+// as JSON text, ready for the timings and memory the sweep adds.
+std::string perform_sweep_run(const std::string& spec, const std::vector<const Algorithm*>& algorithms);
 
 struct SweepOptions {
   std::string results_path;

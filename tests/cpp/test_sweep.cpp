@@ -101,7 +101,7 @@ void write_square_input(const Json& settings, const std::string& points_path, co
   write_file_atomically(truth_path, ground_truth_to_json(truth).dump());
 }
 
-SweepEnvironment test_environment() { return {{&kSquare, &kThrows, &kAborts, &kHangs, &kGreedy}, write_square_input}; }
+SweepEnvironment test_environment() { return {{&kSquare, &kThrows, &kAborts, &kHangs, &kGreedy}, write_square_input, {}}; }
 
 class SweepTest : public ::testing::Test {
  protected:

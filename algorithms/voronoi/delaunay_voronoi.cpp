@@ -153,8 +153,8 @@ void triangulate_sites(std::span<const Point2> points, cgal::Delaunay& dt, Delau
 // two thirds of the neighbours of a face lie thousands of faces away from it, and every
 // walk over the triangles (labeling, medial axis, crusts) would wait on memory at each step
 // once the arrays outgrow the cache. In Z order neighbours are mostly close by. The sort is
-// a stable radix sort on 32-bit keys (16 bits a coordinate), so the numbering is
-// deterministic and costs a few percent of the construction.
+// a stable radix sort of the cells of a grid, so the numbering is deterministic and costs a
+// few percent of the construction.
 std::vector<cgal::Delaunay::Face_handle> faces_in_z_order(cgal::Delaunay& dt, std::span<const Point2> sites) {
   using Face = cgal::Delaunay::Face_handle;
   double min_x = sites[0].x, max_x = min_x, min_y = sites[0].y, max_y = min_y;
@@ -162,9 +162,16 @@ std::vector<cgal::Delaunay::Face_handle> faces_in_z_order(cgal::Delaunay& dt, st
     min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
     min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
   }
-  // Centroid sums (three times the centroid) scaled to [0, 65535].
-  const double scale_x = max_x > min_x ? 65535.0 / (3 * (max_x - min_x)) : 0.0;
-  const double scale_y = max_y > min_y ? 65535.0 / (3 * (max_y - min_y)) : 0.0;
+  // A grid of about 4 cells a face (cells = 2^(2 * grid_bits)), at most 2^16 a side; a
+  // centroid sum (three times the centroid) scaled to [0, cells a side - 1].
+  const auto face_count = static_cast<double>(std::max<std::size_t>(dt.number_of_faces(), 1));
+  const int grid_bits = std::clamp(static_cast<int>(std::ceil(0.5 * std::log2(face_count))) + 1, 1, 16);
+  const double last_cell = std::ldexp(1.0, grid_bits) - 1;
+  const double scale_x = max_x > min_x ? last_cell / (3 * (max_x - min_x)) : 0.0;
+  const double scale_y = max_y > min_y ? last_cell / (3 * (max_y - min_y)) : 0.0;
+  auto to_grid = [last_cell](double v) {  // NaN (coordinates near the limits of double) counts as 0
+    return v > 0 ? static_cast<std::uint32_t>(std::min(v, last_cell)) : 0u;
+  };
   auto spread_bits = [](std::uint32_t v) {  // bit i of v to bit 2i
     v = (v | (v << 8)) & 0x00FF00FFu;
     v = (v | (v << 4)) & 0x0F0F0F0Fu;
@@ -184,14 +191,12 @@ std::vector<cgal::Delaunay::Face_handle> faces_in_z_order(cgal::Delaunay& dt, st
     }
     double sx = -3 * min_x, sy = -3 * min_y;
     for (int i = 0; i < 3; ++i) sx += f->vertex(i)->point().x(), sy += f->vertex(i)->point().y();
-    const auto cx = static_cast<std::uint32_t>(std::clamp(sx * scale_x, 0.0, 65535.0));
-    const auto cy = static_cast<std::uint32_t>(std::clamp(sy * scale_y, 0.0, 65535.0));
-    keyed.push_back({spread_bits(cx) | (spread_bits(cy) << 1), f});
+    keyed.push_back({spread_bits(to_grid(sx * scale_x)) | (spread_bits(to_grid(sy * scale_y)) << 1), f});
   }
   std::vector<Keyed> buffer(keyed.size());
-  constexpr int kDigitBits = 11;  // three passes; 2048 counters stay in the L1 cache
+  constexpr int kDigitBits = 12;  // 4096 counters stay in the L1 cache; two passes up to 2^24 faces
   constexpr std::uint32_t kDigitMask = (1u << kDigitBits) - 1;
-  for (int shift = 0; shift < 32; shift += kDigitBits) {  // least significant digit first: stable
+  for (int shift = 0; shift < 2 * grid_bits; shift += kDigitBits) {  // least significant digit first: stable
     std::array<std::uint32_t, kDigitMask + 2> start{};
     for (const auto& k : keyed) ++start[((k.key >> shift) & kDigitMask) + 1];
     std::partial_sum(start.begin(), start.end(), start.begin());
@@ -268,16 +273,17 @@ DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points) {
 
   std::vector<cgal::Delaunay::Face_handle> faces = faces_in_z_order(dt, dv.sites);
   const int t = static_cast<int>(faces.size());
-  dv.triangles.resize(t);
-  dv.neighbors.resize(t);
-  dv.circumcenters.resize(t);
-  dv.circumradii.resize(t);
-  dv.circumcenter_errors.resize(t);
+  // Filled in order of id by push_back into reserved storage: each array is written once,
+  // without the zero-filling pass of resize.
+  dv.triangles.reserve(t);
+  dv.neighbors.reserve(t);
+  dv.circumcenters.reserve(t);
+  dv.circumradii.reserve(t);
+  dv.circumcenter_errors.reserve(t);
   std::vector<int> hull_next(sites, -1);
   for (int id = 0; id < t; ++id) {
     const auto f = faces[id];
-    auto& tri = dv.triangles[id];
-    auto& nb = dv.neighbors[id];
+    std::array<int, 3> tri, nb;
     Point2 corners[3];  // read from the vertices at hand rather than from dv.sites, in another order
     for (int i = 0; i < 3; ++i) {
       const auto v = f->vertex(i);
@@ -297,7 +303,14 @@ DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points) {
       dv.site_triangle[from] = id;
       hull_next[from] = to;
     }
-    circumcircle(corners[0], corners[1], corners[2], dv.circumcenters[id], dv.circumradii[id], dv.circumcenter_errors[id]);
+    Point2 center;
+    double radius, error;
+    circumcircle(corners[0], corners[1], corners[2], center, radius, error);
+    dv.triangles.push_back(tri);
+    dv.neighbors.push_back(nb);
+    dv.circumcenters.push_back(center);
+    dv.circumradii.push_back(radius);
+    dv.circumcenter_errors.push_back(error);
   }
   const int start = static_cast<int>(std::find(dv.on_hull.begin(), dv.on_hull.end(), 1) - dv.on_hull.begin());
   for (int s = start; s >= 0 && s < sites;) {

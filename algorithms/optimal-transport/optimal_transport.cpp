@@ -87,11 +87,12 @@ class OptimalTransport final : public Algorithm {
     std::vector<Kernel::Point_2> sites;
     sites.reserve(dv.sites.size());
     for (const auto& p : dv.sites) sites.emplace_back(p.x, p.y);
-    // CGAL's reconstruction orders some of its triangulation's elements by address, so its
-    // output depended on the heap it started with: a sweep's row and `reconstruct` on the same
-    // file differed whenever the process had made other allocations first (a longer path in a
-    // spec was enough). A new thread gets a new malloc arena, empty whatever the process did
-    // before, so the output depends on the input alone.
+    // CGAL's reconstruction depends on the layout of the heap it runs in (the same run gave
+    // another curve under GLIBC_TUNABLES=glibc.malloc.tcache_count=0, and valgrind finds no
+    // uninitialised read), so a sweep's row and `reconstruct` on the same file differed
+    // whenever the process had allocated other things first; a longer path was enough. A new
+    // thread gets a malloc arena of its own, empty in a process that has not run this before
+    // (every sweep run and every `reconstruct`), whatever else that process allocated.
     std::vector<Kernel::Point_2> isolated;
     std::vector<Kernel::Segment_2> segments;
     std::exception_ptr failure;

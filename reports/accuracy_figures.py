@@ -99,6 +99,24 @@ def _label_sampled_values(ax, values):
 L2_LINEAR_BELOW = 1e-4
 
 
+def _l2_lines(ax, rows: list[SweepRow], algorithms: list[str], x_of):
+    """One line per algorithm: the median L2 error of its successful runs at each x = x_of(row),
+    with the band of _statistics around it."""
+    for order, algorithm in enumerate(algorithms):
+        by_x = collections.defaultdict(list)
+        for r in rows:
+            if r.ok and r.algorithm == algorithm and r.metric("l2_error") is not None:
+                by_x[x_of(r)].append(r.metric("l2_error"))
+        if not by_x:
+            continue
+        xs = sorted(by_x)
+        stats = [_statistics(by_x[x]) for x in xs]
+        color = algorithm_color(algorithm)
+        ax.plot(xs, [s[0] for s in stats], color=color, marker=algorithm_marker(algorithm),
+                markersize=4, linewidth=stacked_line_width(order, len(algorithms)), alpha=0.9, label=algorithm)
+        ax.fill_between(xs, [s[1] for s in stats], [s[2] for s in stats], color=color, alpha=0.12, linewidth=0)
+
+
 def _l2_axis(ax):
     ax.set_yscale("symlog", linthresh=L2_LINEAR_BELOW)
     ax.set_ylim(bottom=0)
@@ -119,19 +137,7 @@ def l2_density_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFigur
         of_shape = [r for r in chosen if r.shape == shape]
         density = {r.sampling_level: samples.get((shape, r.sampling_level)) for r in of_shape}
         _oracle_line(ax, of_shape, lambda r: density[r.sampling_level])
-        for order, algorithm in enumerate(algorithms):
-            by_density = collections.defaultdict(list)
-            for r in of_shape:
-                if r.ok and r.algorithm == algorithm and r.metric("l2_error") is not None:
-                    by_density[density[r.sampling_level]].append(r.metric("l2_error"))
-            if not by_density:
-                continue
-            xs = sorted(by_density)
-            stats = [_statistics(by_density[x]) for x in xs]
-            color = algorithm_color(algorithm)
-            ax.plot(xs, [s[0] for s in stats], color=color, marker=algorithm_marker(algorithm),
-                    markersize=4, linewidth=stacked_line_width(order, len(algorithms)), alpha=0.9, label=algorithm)
-            ax.fill_between(xs, [s[1] for s in stats], [s[2] for s in stats], color=color, alpha=0.12, linewidth=0)
+        _l2_lines(ax, of_shape, algorithms, lambda r: density[r.sampling_level])
         ax.set_xscale("log")
         _l2_axis(ax)
         _label_sampled_values(ax, sorted({x for x in density.values() if x is not None}))
@@ -225,20 +231,7 @@ def _oracle_line(ax, rows: list[SweepRow], setting):
 def _robustness_panel(ax, rows: list[SweepRow], setting, xlabel: str):
     levels_run = {setting(r) for r in rows}
     algorithms = sorted_algorithms({r.algorithm for r in rows})
-    for order, algorithm in enumerate(algorithms):
-        by_level = collections.defaultdict(list)
-        for r in rows:
-            if r.algorithm == algorithm and r.ok and r.metric("l2_error") is not None:
-                by_level[setting(r)].append(r.metric("l2_error"))
-        if not by_level:
-            continue
-        levels = sorted(by_level)
-        stats = [_statistics(by_level[level]) for level in levels]
-        color = algorithm_color(algorithm)
-        ax.plot(levels, [s[0] for s in stats], color=color, marker=algorithm_marker(algorithm),
-                markersize=4, linewidth=stacked_line_width(order, len(algorithms)), alpha=0.9, label=algorithm)
-        ax.fill_between(levels, [s[1] for s in stats], [s[2] for s in stats],
-                        color=color, alpha=0.12, linewidth=0)
+    _l2_lines(ax, rows, algorithms, setting)
     _oracle_line(ax, rows, setting)
     _l2_axis(ax)
     _label_sampled_values(ax, sorted(levels_run))

@@ -41,6 +41,12 @@ def _mean_by_algorithm(rows: list[SweepRow], value: Callable[[SweepRow], float |
     return {algorithm: float(np.mean(v)) for algorithm, v in values.items()}
 
 
+def _mean_l2_line(experiment: str, rows: list[SweepRow]) -> SummaryLine:
+    """The mean L2 error of each algorithm over these rows (lower is better)."""
+    return SummaryLine(experiment, "mean L2 error", _mean_by_algorithm(rows, lambda r: r.metric("l2_error")),
+                       False, "{:.2e}")
+
+
 def _success_share(rows: list[SweepRow], success: Callable[[SweepRow], bool | None]) -> dict[str, float]:
     """Share of runs per algorithm that succeed; failed runs count as unsuccessful, runs for which
     success is undefined (None) are skipped."""
@@ -89,12 +95,10 @@ def summary_lines(rows: list[SweepRow], suite: ScalingSuite | None) -> list[Summ
         shapes = {r.shape for r in dense}
         sparsest = {shape: min(r.sampling_level for r in dense if r.shape == shape) for shape in shapes}
         densest = {shape: max(r.sampling_level for r in dense if r.shape == shape) for shape in shapes}
-        lines.append(SummaryLine("Sparse sampling (sparsest setting of each shape)", "mean L2 error",
-                                 _mean_by_algorithm([r for r in dense if r.sampling_level == sparsest[r.shape]],
-                                                    lambda r: r.metric("l2_error")), False, "{:.2e}"))
-        lines.append(SummaryLine("Dense sampling (densest setting of each shape)", "mean L2 error",
-                                 _mean_by_algorithm([r for r in dense if r.sampling_level == densest[r.shape]],
-                                                    lambda r: r.metric("l2_error")), False, "{:.2e}"))
+        lines.append(_mean_l2_line("Sparse sampling (sparsest setting of each shape)",
+                                   [r for r in dense if r.sampling_level == sparsest[r.shape]]))
+        lines.append(_mean_l2_line("Dense sampling (densest setting of each shape)",
+                                   [r for r in dense if r.sampling_level == densest[r.shape]]))
     corners = corner_rows(rows)
     if corners:
         families = ", ".join(sorted({r.family for r in corners}))
@@ -104,15 +108,13 @@ def summary_lines(rows: list[SweepRow], suite: ScalingSuite | None) -> list[Summ
     noisy = noise_rows(rows)
     if noisy:
         strongest = max(r.noise for r in noisy)
-        lines.append(SummaryLine(f"Noise (strongest level, {strongest:g})", "mean L2 error",
-                                 _mean_by_algorithm([r for r in noisy if r.noise == strongest],
-                                                    lambda r: r.metric("l2_error")), False, "{:.2e}"))
+        lines.append(_mean_l2_line(f"Noise (strongest level, {strongest:g})",
+                                   [r for r in noisy if r.noise == strongest]))
     with_outliers = outlier_rows(rows)
     if with_outliers:
         most = max(r.outliers for r in with_outliers)
-        lines.append(SummaryLine(f"Outliers (most, {100 * most:g}%)", "mean L2 error",
-                                 _mean_by_algorithm([r for r in with_outliers if r.outliers == most],
-                                                    lambda r: r.metric("l2_error")), False, "{:.2e}"))
+        lines.append(_mean_l2_line(f"Outliers (most, {100 * most:g}%)",
+                                   [r for r in with_outliers if r.outliers == most]))
     medial = _mean_by_algorithm(rows, lambda r: r.metric("medial_axis_hausdorff"))
     if medial:
         lines.append(SummaryLine("Medial axis", "mean Hausdorff distance to the true axis / diagonal", medial, False,

@@ -35,38 +35,49 @@ MedialAxis voronoi_subgraph(const DelaunayVoronoi& dv, std::span<const std::uint
     return dot(gap, gap) <= tolerance * tolerance && is_degenerate_voronoi_edge(dv, t, k);
   };
 
-  // One vertex per kept triangle and one edge per kept Voronoi edge, unless two vertices coincide.
-  MedialAxis axis;
-  const auto kept = static_cast<std::size_t>(std::count_if(keep.begin(), keep.end(), [](std::uint8_t k) { return k != 0; }));
-  axis.vertices.reserve(kept);
-  axis.radii.reserve(kept);
-  axis.edges.reserve(kept + kept / 2);
-  std::vector<int> vertex_of(triangles, -1);
-  for (int t = 0; t < triangles; ++t) {
-    if (!keep[t]) continue;
-    vertex_of[t] = static_cast<int>(axis.vertices.size());
-    axis.vertices.push_back(dv.circumcenters[t]);
-    axis.radii.push_back(dv.circumradii[t]);
-  }
-  bool any_coinciding = false;
-  for (int t = 0; t < triangles && !any_coinciding; ++t) {
-    for (int k = 0; k < 3; ++k) {
-      if (!kept_edge(t, k)) continue;
-      if (coinciding(t, k)) {
-        any_coinciding = true;
-        break;
-      }
-      axis.edges.push_back(make_edge(vertex_of[t], vertex_of[dv.neighbors[t][k]]));
-    }
-  }
-  if (!any_coinciding) return axis;
-
-  // Co-circular sites: merge the classes of coinciding vertices (union-find over triangles).
   auto find_root = [](std::vector<int>& parent, int x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  std::vector<int> parent(triangles);
+  std::vector<int> parent;  // union-find over triangles, built only once two vertices coincide
+  auto root_of = [&](int t) { return parent.empty() ? t : find_root(parent, t); };
+
+  // One vertex per class of coinciding kept triangles, one edge per kept Voronoi edge between
+  // two classes. Before any merge every triangle is its own class; meeting a zero-length edge
+  // then stops the collection (false), since classes must be merged first.
+  MedialAxis axis;
+  std::vector<int> vertex_of(triangles, -1);
+  auto collect = [&] {
+    axis = {};
+    std::fill(vertex_of.begin(), vertex_of.end(), -1);
+    const auto kept = static_cast<std::size_t>(std::count_if(keep.begin(), keep.end(), [](std::uint8_t k) { return k != 0; }));
+    axis.vertices.reserve(kept);
+    axis.radii.reserve(kept);
+    axis.edges.reserve(kept + kept / 2);
+    for (int t = 0; t < triangles; ++t) {
+      if (!keep[t]) continue;
+      const int root = root_of(t);
+      if (vertex_of[root] < 0) {
+        vertex_of[root] = static_cast<int>(axis.vertices.size());
+        axis.vertices.push_back(dv.circumcenters[root]);
+        axis.radii.push_back(dv.circumradii[root]);
+      }
+      vertex_of[t] = vertex_of[root];
+    }
+    for (int t = 0; t < triangles; ++t) {
+      for (int k = 0; k < 3; ++k) {
+        if (!kept_edge(t, k)) continue;
+        if (parent.empty() && coinciding(t, k)) return false;
+        const int a = vertex_of[t], b = vertex_of[dv.neighbors[t][k]];
+        if (a != b) axis.edges.push_back(make_edge(a, b));
+      }
+    }
+    return true;
+  };
+  if (collect()) return axis;
+
+  // Co-circular sites: merge the classes of coinciding vertices and collect again.
+  parent.resize(triangles);
   std::iota(parent.begin(), parent.end(), 0);
   for (int t = 0; t < triangles; ++t) {
     for (int k = 0; k < 3; ++k) {
@@ -75,25 +86,7 @@ MedialAxis voronoi_subgraph(const DelaunayVoronoi& dv, std::span<const std::uint
       parent[std::max(a, b)] = std::min(a, b);  // the smallest triangle represents its class
     }
   }
-  axis = {};
-  std::fill(vertex_of.begin(), vertex_of.end(), -1);
-  for (int t = 0; t < triangles; ++t) {
-    if (!keep[t]) continue;
-    const int root = find_root(parent, t);
-    if (vertex_of[root] < 0) {
-      vertex_of[root] = static_cast<int>(axis.vertices.size());
-      axis.vertices.push_back(dv.circumcenters[root]);
-      axis.radii.push_back(dv.circumradii[root]);
-    }
-    vertex_of[t] = vertex_of[root];
-  }
-  for (int t = 0; t < triangles; ++t) {
-    for (int k = 0; k < 3; ++k) {
-      if (!kept_edge(t, k)) continue;
-      const int a = vertex_of[t], b = vertex_of[dv.neighbors[t][k]];
-      if (a != b) axis.edges.push_back(make_edge(a, b));
-    }
-  }
+  collect();
   // Merged classes can be joined by more than one Voronoi edge.
   std::sort(axis.edges.begin(), axis.edges.end());
   axis.edges.erase(std::unique(axis.edges.begin(), axis.edges.end()), axis.edges.end());

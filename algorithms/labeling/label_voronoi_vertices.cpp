@@ -43,10 +43,11 @@ VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
   // a vertex on the hull boundary counts as inside. The others start the walks (Line 4).
   std::vector<int> queue;
   std::vector<std::uint8_t> outside_hull(triangles, 0);
+  int hull_wedge = 0;  // triangles are numbered in space-filling order: EVVs come hull-wise
   for (int t = 0; t < triangles; ++t) {
     if (!has_hull_edge(dv, t)) continue;
     ++labels.extreme_vertices;
-    if (in_convex_hull(dv, dv.circumcenters[t])) {
+    if (in_convex_hull(dv, dv.circumcenters[t], hull_wedge)) {
       labels.inner[t] = 1;
     } else {
       queue.push_back(t);

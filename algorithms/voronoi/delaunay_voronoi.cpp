@@ -358,8 +358,6 @@ bool is_degenerate_voronoi_edge(const DelaunayVoronoi& dv, int triangle, int cor
   return CGAL::side_of_oriented_circle(P(tri[0]), P(tri[1]), P(tri[2]), P(apex)) == CGAL::ON_ORIENTED_BOUNDARY;
 }
 
-namespace {
-
 int exact_side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source, int query) {
   using Q = CGAL::Exact_rational;
   const Point2 p = dv.sites[site];
@@ -379,21 +377,12 @@ int exact_side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source, 
   return CGAL::sign(sx * qx + sy * qy);
 }
 
-}  // namespace
-
-int side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source_triangle, int query_triangle) {
-  const Point2 p = dv.sites[site];
-  const double value = dot(dv.circumcenters[query_triangle] - p, dv.circumcenters[source_triangle] - p);
-  // p lies on both circumcircles, so the two vectors have the circumradii as lengths.
-  const double rounding = 4.0 * std::numeric_limits<double>::epsilon() * (std::abs(p.x) + std::abs(p.y));
-  const double eu = dv.circumcenter_errors[query_triangle] + rounding;
-  const double ev = dv.circumcenter_errors[source_triangle] + rounding;
-  const double bound = eu * dv.circumradii[source_triangle] + ev * dv.circumradii[query_triangle] + eu * ev;
-  if (std::abs(value) > bound && std::isfinite(bound)) return value > 0 ? 1 : -1;
-  return exact_side_of_tangent_line(dv, site, source_triangle, query_triangle);
+bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q) {
+  int wedge = static_cast<int>(dv.hull.size() / 2);
+  return in_convex_hull(dv, q, wedge);
 }
 
-bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q) {
+bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q, int& wedge) {
   const auto& h = dv.hull;
   const int m = static_cast<int>(h.size());
   if (dv.dimension < 2 || m < 3) return false;
@@ -402,12 +391,37 @@ bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q) {
   const cgal::Point origin = P(h[0]);
   if (CGAL::orientation(origin, P(h[1]), query) == CGAL::RIGHT_TURN) return false;
   if (CGAL::orientation(origin, P(h[m - 1]), query) == CGAL::LEFT_TURN) return false;
-  // Largest i in [1, m-2] with query left of or on the ray origin -> h[i]: the fan wedge.
-  int lo = 1, hi = m - 2;
+  // The fan wedge: the largest i in [1, m-2] with the query left of or on the ray
+  // origin -> h[i]. That holds for every i up to the answer and for none after, and for i = 1.
+  auto left_of_ray = [&](int i) { return CGAL::orientation(origin, P(h[i]), query) != CGAL::RIGHT_TURN; };
+  const int start = std::clamp(wedge, 1, m - 2);
+  int lo = 1, hi = m - 2;  // the answer lies in [lo, hi]
+  if (left_of_ray(start)) {
+    lo = start;
+    for (int step = 1; lo < hi; step *= 2) {
+      const int probe = std::min(lo + step, hi);
+      if (!left_of_ray(probe)) {
+        hi = probe - 1;
+        break;
+      }
+      lo = probe;
+    }
+  } else {
+    hi = start - 1;
+    for (int step = 1; lo < hi; step *= 2) {
+      const int probe = std::max(hi - step, lo);
+      if (left_of_ray(probe)) {
+        lo = probe;
+        break;
+      }
+      hi = probe - 1;
+    }
+  }
   while (lo < hi) {
     const int mid = (lo + hi + 1) / 2;
-    if (CGAL::orientation(origin, P(h[mid]), query) != CGAL::RIGHT_TURN) lo = mid; else hi = mid - 1;
+    if (left_of_ray(mid)) lo = mid; else hi = mid - 1;
   }
+  wedge = lo;
   return CGAL::orientation(P(h[lo]), P(h[lo + 1]), query) != CGAL::RIGHT_TURN;
 }
 

@@ -2,6 +2,9 @@
 // degenerate configurations it promises to handle (co-circular, collinear, ties).
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+#include <random>
 #include <set>
 
 #include "test_support.h"
@@ -123,6 +126,41 @@ TEST(VoronoiLayer, ConvexHullMembership) {
   EXPECT_TRUE(in_convex_hull(dv, {4, 2}));  // on the boundary counts as inside
   EXPECT_FALSE(in_convex_hull(dv, {4.0000001, 2}));
   EXPECT_FALSE(in_convex_hull(dv, {-1, -1}));
+}
+
+TEST(VoronoiLayer, ConvexHullMembershipFromAnyWedgeHint) {
+  // Integer points near a circle: hundreds of hull vertices, and orientations exact in double,
+  // so a brute-force test over every hull edge is the reference.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi);
+  std::vector<Point2> points;
+  for (int i = 0; i < 400; ++i) {
+    const double t = angle(rng);
+    points.push_back({std::round(1e5 * std::cos(t)), std::round(1e5 * std::sin(t))});
+  }
+  const auto dv = build_delaunay_voronoi(points);
+  const auto& h = dv.hull;
+  const int m = static_cast<int>(h.size());
+  ASSERT_GT(m, 100);
+  auto brute_force = [&](Point2 q) {
+    for (int i = 0; i < m; ++i) {
+      if (cross(dv.sites[h[(i + 1) % m]] - dv.sites[h[i]], q - dv.sites[h[i]]) < 0) return false;
+    }
+    return true;
+  };
+  std::uniform_int_distribution<int> coordinate(-120000, 120000), hint(-5, m + 5);
+  int wedge = 0;  // carried from query to query, as the labeler does
+  for (int k = 0; k < 4000; ++k) {
+    // Every fourth query is a hull vertex or the midpoint of a hull edge: on the boundary.
+    const Point2 a = dv.sites[h[k % m]], b = dv.sites[h[(k + 1) % m]];
+    const Point2 q = k % 4 == 0 ? (k % 8 == 0 ? a : Point2{(a.x + b.x) / 2, (a.y + b.y) / 2})
+                                : Point2{double(coordinate(rng)), double(coordinate(rng))};
+    const bool expected = brute_force(q);
+    int random_hint = hint(rng);
+    EXPECT_EQ(in_convex_hull(dv, q, random_hint), expected) << q.x << " " << q.y;
+    EXPECT_EQ(in_convex_hull(dv, q, wedge), expected) << q.x << " " << q.y;
+    EXPECT_EQ(in_convex_hull(dv, q), expected) << q.x << " " << q.y;
+  }
 }
 
 }  // namespace

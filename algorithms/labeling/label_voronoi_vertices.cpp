@@ -6,11 +6,6 @@
 namespace curvebench {
 namespace {
 
-bool has_hull_edge(const DelaunayVoronoi& dv, int t) {
-  const auto& nb = dv.neighbors[t];
-  return nb[0] == kInfinite || nb[1] == kInfinite || nb[2] == kInfinite;
-}
-
 // Definition 5 (label transition rule), applied to `vertex` in the cell of every one of its
 // three samples that already has a finite source vertex (reading note 1: the test comes
 // before pairing, otherwise the vertex would be its own sample's source and the rule would
@@ -43,9 +38,13 @@ VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
   // a vertex on the hull boundary counts as inside. The others start the walks (Line 4).
   std::vector<int> queue;
   std::vector<std::uint8_t> outside_hull(triangles, 0);
-  int hull_wedge = 0;  // triangles are numbered in space-filling order: EVVs come hull-wise
-  for (int t = 0; t < triangles; ++t) {
-    if (!has_hull_edge(dv, t)) continue;
+  // Each hull edge lies in one triangle, the first of its start site's fan, so walking the
+  // hull meets every EVV (one with two hull edges twice in a row) without scanning all
+  // triangles, and meets them in hull order, where each hull test starts next to the last.
+  int hull_wedge = 0;
+  for (int site : dv.hull) {
+    const int t = dv.site_triangle[site];
+    if (labels.inner[t] || outside_hull[t]) continue;  // met already, from its other hull edge
     ++labels.extreme_vertices;
     if (in_convex_hull(dv, dv.circumcenters[t], hull_wedge)) {
       labels.inner[t] = 1;

@@ -1,5 +1,7 @@
 #include "labeling/dominant_points.h"
 
+#include <cstdint>
+
 namespace curvebench {
 namespace {
 
@@ -23,12 +25,18 @@ std::vector<int> detect_dominant_points(const DelaunayVoronoi& dv, const Voronoi
   // edge of the site, so the label changes around a cell are its curve edges. With two
   // changes there are two runs and a run of length one means a label occurs once; only
   // cells where that holds, or with more changes, need the walk below.
+  // A site's inner count is the low half of one 64-bit word, its outer count the high half:
+  // one cache line per site instead of two for the scattered increments below.
   const int sites = dv.site_count();
-  std::vector<int> inner_count(sites, 0), outer_count(sites, 0), changes(sites, 0);
-  for (int site = 0; site < sites; ++site) outer_count[site] = dv.on_hull[site];  // the infinite vertex
+  constexpr std::uint64_t kInner = 1, kOuter = std::uint64_t{1} << 32;
+  auto inner_count = [](std::uint64_t counts) { return counts & 0xFFFFFFFFu; };
+  auto outer_count = [](std::uint64_t counts) { return counts >> 32; };
+  std::vector<std::uint64_t> counts(sites);
+  std::vector<int> changes(sites, 0);
+  for (int site = 0; site < sites; ++site) counts[site] = dv.on_hull[site] ? kOuter : 0;  // the infinite vertex
   for (int t = 0; t < dv.triangle_count(); ++t) {
-    auto& count = labels.inner[t] ? inner_count : outer_count;
-    for (int site : dv.triangles[t]) ++count[site];
+    const std::uint64_t one = labels.inner[t] ? kInner : kOuter;
+    for (int site : dv.triangles[t]) counts[site] += one;
   }
   for (const auto& e : curve_edges) ++changes[e[0]], ++changes[e[1]];
 
@@ -36,7 +44,7 @@ std::vector<int> detect_dominant_points(const DelaunayVoronoi& dv, const Voronoi
   std::vector<int> cell;
   for (int site = 0; site < sites; ++site) {
     if (changes[site] < 2) continue;
-    if (changes[site] == 2 && inner_count[site] != 1 && outer_count[site] != 1) continue;
+    if (changes[site] == 2 && inner_count(counts[site]) != 1 && outer_count(counts[site]) != 1) continue;
     voronoi_cell(dv, site, cell);
     const int m = static_cast<int>(cell.size());
     const bool unbounded = dv.on_hull[site];

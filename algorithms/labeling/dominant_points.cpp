@@ -24,9 +24,9 @@ std::vector<int> detect_dominant_points(const DelaunayVoronoi& dv, const Voronoi
   // Consecutive vertices of a cell are the two ends of the Voronoi edge dual to a Delaunay
   // edge of the site, so the label changes around a cell are its curve edges. With two
   // changes there are two runs and a run of length one means a label occurs once; only
-  // cells where that holds, or with more changes, need the walk below.
-  // A site's inner count is the low half of one 64-bit word, its outer count the high half:
-  // one cache line per site instead of two for the scattered increments below.
+  // cells where that holds, or with more changes, need the walk below. A site's inner count
+  // is the low half of one 64-bit word and its outer count the high half, so each scattered
+  // increment touches one cache line, not two.
   const int sites = dv.site_count();
   constexpr std::uint64_t kInner = 1, kOuter = std::uint64_t{1} << 32;
   auto inner_count = [](std::uint64_t counts) { return counts & 0xFFFFFFFFu; };

@@ -377,11 +377,6 @@ int exact_side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source, 
   return CGAL::sign(sx * qx + sy * qy);
 }
 
-bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q) {
-  int wedge = static_cast<int>(dv.hull.size() / 2);
-  return in_convex_hull(dv, q, wedge);
-}
-
 bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q, int& wedge) {
   const auto& h = dv.hull;
   const int m = static_cast<int>(h.size());
@@ -395,27 +390,16 @@ bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q, int& wedge) {
   // origin -> h[i]. That holds for every i up to the answer and for none after, and for i = 1.
   auto left_of_ray = [&](int i) { return CGAL::orientation(origin, P(h[i]), query) != CGAL::RIGHT_TURN; };
   const int start = std::clamp(wedge, 1, m - 2);
-  int lo = 1, hi = m - 2;  // the answer lies in [lo, hi]
+  int lo = 1, hi = m - 2;  // the answer lies in [lo, hi]: gallop from the hint to narrow it, then bisect
+  int step = 1;
   if (left_of_ray(start)) {
     lo = start;
-    for (int step = 1; lo < hi; step *= 2) {
-      const int probe = std::min(lo + step, hi);
-      if (!left_of_ray(probe)) {
-        hi = probe - 1;
-        break;
-      }
-      lo = probe;
-    }
+    while (lo + step <= hi && left_of_ray(lo + step)) lo += step, step *= 2;
+    hi = std::min(hi, lo + step - 1);
   } else {
     hi = start - 1;
-    for (int step = 1; lo < hi; step *= 2) {
-      const int probe = std::max(hi - step, lo);
-      if (left_of_ray(probe)) {
-        lo = probe;
-        break;
-      }
-      hi = probe - 1;
-    }
+    while (hi - step >= lo && !left_of_ray(hi - step)) hi -= step + 1, step *= 2;
+    lo = std::max(lo, hi - step);
   }
   while (lo < hi) {
     const int mid = (lo + hi + 1) / 2;

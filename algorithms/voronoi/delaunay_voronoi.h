@@ -121,11 +121,9 @@ inline int side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source_
 }
 
 // True if `q` lies inside or on the boundary of the convex hull of the sites (dimension 2).
-bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q);
-
-// The same, for a sequence of queries: `wedge` (any value at first) keeps the hull position
-// where the last query was decided, and the search gallops from there, so a query near the
-// one before costs a few orientation tests instead of log(hull size).
+// `wedge` (any value at first) keeps the hull position where the last query was decided,
+// and the search gallops from there: in a sequence of queries, one near the one before
+// costs a few orientation tests instead of log(hull size).
 bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q, int& wedge);
 
 }  // namespace curvebench

@@ -122,10 +122,11 @@ TEST(VoronoiLayer, CircumcentreIsFiniteWhenTheCrossProductRoundsToZero) {
 
 TEST(VoronoiLayer, ConvexHullMembership) {
   const auto dv = build_delaunay_voronoi(std::vector<Point2>{{0, 0}, {4, 0}, {4, 4}, {0, 4}, {2, 1}});
-  EXPECT_TRUE(in_convex_hull(dv, {2, 2}));
-  EXPECT_TRUE(in_convex_hull(dv, {4, 2}));  // on the boundary counts as inside
-  EXPECT_FALSE(in_convex_hull(dv, {4.0000001, 2}));
-  EXPECT_FALSE(in_convex_hull(dv, {-1, -1}));
+  int wedge = 0;
+  EXPECT_TRUE(in_convex_hull(dv, {2, 2}, wedge));
+  EXPECT_TRUE(in_convex_hull(dv, {4, 2}, wedge));  // on the boundary counts as inside
+  EXPECT_FALSE(in_convex_hull(dv, {4.0000001, 2}, wedge));
+  EXPECT_FALSE(in_convex_hull(dv, {-1, -1}, wedge));
 }
 
 TEST(VoronoiLayer, ConvexHullMembershipFromAnyWedgeHint) {
@@ -151,15 +152,20 @@ TEST(VoronoiLayer, ConvexHullMembershipFromAnyWedgeHint) {
   std::uniform_int_distribution<int> coordinate(-120000, 120000), hint(-5, m + 5);
   int wedge = 0;  // carried from query to query, as the labeler does
   for (int k = 0; k < 4000; ++k) {
-    // Every fourth query is a hull vertex or the midpoint of a hull edge: on the boundary.
+    // A quarter of the queries lie on the boundary (a hull vertex or the midpoint of a hull
+    // edge), a quarter just outside the middle of a hull edge, where only that edge's wedge
+    // tells them apart from the inside; the rest anywhere around the hull.
     const Point2 a = dv.sites[h[k % m]], b = dv.sites[h[(k + 1) % m]];
-    const Point2 q = k % 4 == 0 ? (k % 8 == 0 ? a : Point2{(a.x + b.x) / 2, (a.y + b.y) / 2})
-                                : Point2{double(coordinate(rng)), double(coordinate(rng))};
+    const Point2 middle{(a.x + b.x) / 2, (a.y + b.y) / 2}, outward{0.01 * (b.y - a.y), -0.01 * (b.x - a.x)};
+    const Point2 q = k % 4 == 0   ? (k % 8 == 0 ? a : middle)
+                     : k % 4 == 1 ? middle + outward
+                                  : Point2{double(coordinate(rng)), double(coordinate(rng))};
     const bool expected = brute_force(q);
     int random_hint = hint(rng);
     EXPECT_EQ(in_convex_hull(dv, q, random_hint), expected) << q.x << " " << q.y;
     EXPECT_EQ(in_convex_hull(dv, q, wedge), expected) << q.x << " " << q.y;
-    EXPECT_EQ(in_convex_hull(dv, q), expected) << q.x << " " << q.y;
+    int fresh_hint = 0;
+    EXPECT_EQ(in_convex_hull(dv, q, fresh_hint), expected) << q.x << " " << q.y;
   }
 }
 

@@ -1,8 +1,11 @@
-// Algorithm 2, lines 9-10: the curve and the interior medial axis read off the labels.
+// Algorithm 2, lines 9-10 and Section 3.4: the curve, the dominant points and the interior
+// medial axis read off the labels.
 //
 // In:  Delaunay/Voronoi arrays and the final vertex labels.
 // Out: curve edges (site pairs) = Delaunay edges whose dual Voronoi edge joins an inner and
 //      an outer vertex (a hull edge's dual joins its triangle to the infinite, outer vertex);
+//      dominant points (site indices, ascending) = the sites of the label patterns that pass
+//      the filter of dominant_points.h, found in the same pass over the label changes;
 //      medial axis = the inner Voronoi vertices with their radii and the Voronoi edges joining
 //      two inner vertices. Coinciding vertices (co-circular sites, joined by zero-length
 //      Voronoi edges) are merged into one medial-axis vertex.
@@ -15,7 +18,12 @@
 
 namespace curvebench {
 
-std::vector<Edge> extract_curve_edges(const DelaunayVoronoi& dv, const VoronoiLabels& labels);
+struct CurveAndDominantPoints {
+  std::vector<Edge> curve_edges;
+  std::vector<int> dominant_points;
+};
+
+CurveAndDominantPoints extract_curve_and_dominant_points(const DelaunayVoronoi& dv, const VoronoiLabels& labels);
 
 MedialAxis extract_interior_medial_axis(const DelaunayVoronoi& dv, const VoronoiLabels& labels);
 

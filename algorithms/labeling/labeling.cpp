@@ -1,7 +1,6 @@
 #include "labeling/labeling.h"
 
 #include "core/phase_timer.h"
-#include "labeling/dominant_points.h"
 #include "labeling/extract_shapes.h"
 #include "labeling/label_voronoi_vertices.h"
 
@@ -26,8 +25,7 @@ class Labeling final : public Algorithm {
     timer.lap("labeling");
     Reconstruction result;
     result.distinct_points = dv.site_count();
-    std::vector<Edge> curve = extract_curve_edges(dv, labels);
-    std::vector<int> dominant = detect_dominant_points(dv, labels, curve);
+    auto [curve, dominant] = extract_curve_and_dominant_points(dv, labels);
     result.curve_edges = to_input_indices(dv, std::move(curve));
     result.medial_axis = extract_interior_medial_axis(dv, labels);
     for (int& site : dominant) site = dv.input_of_site[site];

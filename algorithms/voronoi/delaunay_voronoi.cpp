@@ -335,17 +335,6 @@ std::vector<Edge> to_input_indices(const DelaunayVoronoi& dv, std::vector<Edge> 
   return site_edges;
 }
 
-void voronoi_cell(const DelaunayVoronoi& dv, int site, std::vector<int>& cell) {
-  cell.clear();
-  const int first = dv.site_triangle[site];
-  if (first < 0) return;
-  int t = first;
-  do {
-    cell.push_back(t);
-    t = dv.neighbors[t][(corner_of(dv, t, site) + 1) % 3];  // next triangle counter-clockwise
-  } while (t != kInfinite && t != first);
-}
-
 bool is_degenerate_voronoi_edge(const DelaunayVoronoi& dv, int triangle, int corner) {
   const int other = dv.neighbors[triangle][corner];
   if (other == kInfinite) return false;

@@ -82,18 +82,6 @@ void require_triangulation(const DelaunayVoronoi& dv, const std::string& algorit
 // Edges between sites as edges between input indices (first occurrences), in the same order.
 std::vector<Edge> to_input_indices(const DelaunayVoronoi& dv, std::vector<Edge> site_edges);
 
-// Corner (0, 1 or 2) of `site` in `triangle`.
-inline int corner_of(const DelaunayVoronoi& dv, int triangle, int site) {
-  const auto& t = dv.triangles[triangle];
-  return t[0] == site ? 0 : (t[1] == site ? 1 : 2);
-}
-
-// The Voronoi cell of `site` as the triangles (= Voronoi vertices) around it in
-// counter-clockwise order, written into `cell`. A bounded cell is cyclic. An unbounded
-// (hull) cell is the open chain from the triangle on one infinite edge to the triangle on
-// the other; the infinite Voronoi vertex closes the cycle between its last and first entry.
-void voronoi_cell(const DelaunayVoronoi& dv, int site, std::vector<int>& cell);
-
 // True if the Voronoi edge dual to the Delaunay edge opposite `corner` of `triangle` has
 // zero length: the four sites of the two triangles are exactly co-circular. False for hull edges.
 bool is_degenerate_voronoi_edge(const DelaunayVoronoi& dv, int triangle, int corner);

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <numbers>
+#include <random>
 
 #include "core/registry.h"
 #include "labeling/dominant_points.h"
@@ -19,6 +21,7 @@ using testing::lattice_circle;
 using testing::sample_polygon_evenly;
 using testing::star_polygon;
 using testing::uniform_circle;
+using testing::voronoi_cell;
 
 Reconstruction run_labeling(const std::vector<Point2>& points) {
   return find_algorithm("labeling").reconstruct(points, {});
@@ -68,16 +71,78 @@ TEST(Labeling, EveryDominantPointShowsALabelPatternOnItsCell) {
   const auto points = sample_polygon_evenly(star_polygon(0.6), 200);
   const auto dv = build_delaunay_voronoi(points);
   const auto labels = label_voronoi_vertices(dv);
-  const auto dominant = detect_dominant_points(dv, labels, extract_curve_edges(dv, labels));
+  const auto dominant = extract_curve_and_dominant_points(dv, labels).dominant_points;
   ASSERT_FALSE(dominant.empty());
-  std::vector<int> cell;
   for (int site : dominant) {
-    voronoi_cell(dv, site, cell);
+    const auto cell = voronoi_cell(dv, site);
     int inner = 0;
     for (int t : cell) inner += labels.inner[t];
     const int outer = static_cast<int>(cell.size()) - inner + (dv.on_hull[site] ? 1 : 0);
     EXPECT_TRUE(inner >= 1 && outer >= 1) << "a pattern needs both labels in the cell of " << site;
   }
+}
+
+// Section 3.4 read literally: walk each cell cyclically (the infinite vertex closing an
+// unbounded one, its direction the outward normal of the hull edge next to it), look for a
+// vertex whose label differs from both neighbours, and apply the filter to its terminals.
+std::vector<int> dominant_points_cell_by_cell(const DelaunayVoronoi& dv, const VoronoiLabels& labels) {
+  const int hull_size = static_cast<int>(dv.hull.size());
+  std::vector<int> dominant;
+  for (int site = 0; site < dv.site_count(); ++site) {
+    const auto cell = voronoi_cell(dv, site);
+    const int m = static_cast<int>(cell.size());
+    const int cycle = m + (dv.on_hull[site] ? 1 : 0);  // position m is the infinite vertex
+    auto is_inner = [&](int pos) { return pos < m && labels.inner[cell[pos]]; };
+    const Point2 p = dv.sites[site];
+    // The hull edge to the counter-clockwise next hull site precedes cell[0]; the edge from the
+    // previous one follows cell[m - 1].
+    auto hull_normal = [&](bool at_end) {
+      const int h = static_cast<int>(std::find(dv.hull.begin(), dv.hull.end(), site) - dv.hull.begin());
+      const Point2 from = at_end ? dv.sites[dv.hull[(h + hull_size - 1) % hull_size]] : p;
+      const Point2 to = at_end ? p : dv.sites[dv.hull[(h + 1) % hull_size]];
+      return Point2{to.y - from.y, from.x - to.x};
+    };
+    bool found = false;
+    for (int pos = 0; pos < m && !found; ++pos) {
+      const int before = (pos + cycle - 1) % cycle, after = (pos + 1) % cycle;
+      const bool centre = is_inner(pos);
+      if (is_inner(before) == centre || is_inner(after) == centre) continue;
+      const int c = cell[pos];
+      auto across = [&](int terminal, bool at_end) {
+        if (terminal == m) return dot(hull_normal(at_end), dv.circumcenters[c] - p) < 0;
+        return side_of_tangent_line(dv, site, c, cell[terminal]) < 0;
+      };
+      found = across(before, false) && across(after, true);
+    }
+    if (found) dominant.push_back(site);
+  }
+  return dominant;
+}
+
+TEST(Labeling, DominantPointsFromLocalLabelChangesEqualTheCellByCellReading) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Point2> cloud(400);  // random labels everywhere, and hull samples with patterns
+  for (auto& p : cloud) p = {unit(rng), unit(rng)};
+  std::vector<Point2> noisy_circle;
+  for (int k = 0; k < 300; ++k) {
+    const double t = 2 * std::numbers::pi * unit(rng), r = 1 + 0.05 * (unit(rng) - 0.5);
+    noisy_circle.push_back({r * std::cos(t), r * std::sin(t)});
+  }
+  const std::vector<std::vector<Point2>> inputs{sample_polygon_evenly(star_polygon(0.6), 200),
+                                               sample_polygon_evenly({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 200),
+                                               cloud, noisy_circle, uniform_circle(12), lattice_circle(5525)};
+  int dominant_total = 0, on_hull = 0;
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const auto dv = build_delaunay_voronoi(inputs[i]);
+    const auto labels = label_voronoi_vertices(dv);
+    const auto reference = dominant_points_cell_by_cell(dv, labels);
+    EXPECT_EQ(extract_curve_and_dominant_points(dv, labels).dominant_points, reference) << "input " << i;
+    dominant_total += static_cast<int>(reference.size());
+    for (int site : reference) on_hull += dv.on_hull[site];
+  }
+  EXPECT_GT(dominant_total, 20) << "the inputs must show patterns";
+  EXPECT_GT(on_hull, 0) << "and some on hull samples, where the infinite vertex is a terminal";
 }
 
 TEST(Labeling, LabelsAreConsistentWithEveryOutput) {
@@ -98,7 +163,7 @@ TEST(Labeling, LabelsAreConsistentWithEveryOutput) {
   EXPECT_EQ(axis.vertices.size(), static_cast<size_t>(std::count(labels.inner.begin(), labels.inner.end(), 1)));
   // Curve degree 2 everywhere: every sample has exactly two curve edges.
   std::map<int, int> degree;
-  for (const auto& e : extract_curve_edges(dv, labels)) ++degree[e[0]], ++degree[e[1]];
+  for (const auto& e : extract_curve_and_dominant_points(dv, labels).curve_edges) ++degree[e[0]], ++degree[e[1]];
   for (int s = 0; s < dv.site_count(); ++s) EXPECT_EQ(degree[s], 2) << "sample " << s;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/point.h"
+#include "voronoi/delaunay_voronoi.h"
 
 namespace curvebench::testing {
 
@@ -16,6 +17,28 @@ inline std::vector<Edge> cycle_edges(int n, int first = 0) {
   for (int i = 0; i < n; ++i) edges.push_back(make_edge(first + i, first + (i + 1) % n));
   std::sort(edges.begin(), edges.end());
   return edges;
+}
+
+// Corner (0, 1 or 2) of `site` in `triangle`.
+inline int corner_of(const DelaunayVoronoi& dv, int triangle, int site) {
+  const auto& t = dv.triangles[triangle];
+  return t[0] == site ? 0 : (t[1] == site ? 1 : 2);
+}
+
+// The Voronoi cell of `site` as the triangles (= Voronoi vertices) around it in
+// counter-clockwise order. A bounded cell is cyclic. An unbounded (hull) cell is the open
+// chain from the triangle on one infinite edge to the triangle on the other; the infinite
+// Voronoi vertex closes the cycle between its last and first entry.
+inline std::vector<int> voronoi_cell(const DelaunayVoronoi& dv, int site) {
+  std::vector<int> cell;
+  const int first = dv.site_triangle[site];
+  if (first < 0) return cell;
+  int t = first;
+  do {
+    cell.push_back(t);
+    t = dv.neighbors[t][(corner_of(dv, t, site) + 1) % 3];  // next triangle counter-clockwise
+  } while (t != kInfinite && t != first);
+  return cell;
 }
 
 inline std::vector<Edge> sorted(std::vector<Edge> edges) {

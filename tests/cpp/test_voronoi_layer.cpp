@@ -15,13 +15,14 @@ namespace {
 
 using testing::lattice_circle;
 using testing::uniform_circle;
+using testing::corner_of;
+using testing::voronoi_cell;
 
 void expect_consistent(const DelaunayVoronoi& dv) {
   ASSERT_EQ(dv.dimension, 2);
   int cell_vertices = 0;
-  std::vector<int> cell;
   for (int s = 0; s < dv.site_count(); ++s) {
-    voronoi_cell(dv, s, cell);
+    const auto cell = voronoi_cell(dv, s);
     ASSERT_FALSE(cell.empty()) << "site " << s;
     for (int t : cell) EXPECT_NE(std::find(dv.triangles[t].begin(), dv.triangles[t].end(), s), dv.triangles[t].end());
     cell_vertices += static_cast<int>(cell.size());
@@ -66,10 +67,9 @@ TEST(VoronoiLayer, ExactlyCocircularSitesGiveOneDegenerateVoronoiVertex) {
 
 TEST(VoronoiLayer, HullCellWalkCoversTheWholeFan) {
   const auto dv = build_delaunay_voronoi(uniform_circle(12));
-  std::vector<int> cell;
   int total = 0;
   for (int s : dv.hull) {
-    voronoi_cell(dv, s, cell);
+    const auto cell = voronoi_cell(dv, s);
     // The chain starts on the clockwise hull edge and ends on the counter-clockwise one.
     const int first = cell.front(), last = cell.back();
     EXPECT_EQ(dv.neighbors[first][(corner_of(dv, first, s) + 2) % 3], kInfinite);

@@ -65,6 +65,7 @@ MedialAxis voronoi_subgraph(const DelaunayVoronoi& dv, std::span<const std::uint
       vertex_of[t] = vertex_of[root];
     }
     for (int t = 0; t < triangles; ++t) {
+      if (!keep[t]) continue;
       for (int k = 0; k < 3; ++k) {
         if (!kept_edge(t, k)) continue;
         if (parent.empty() && coinciding(t, k)) return false;

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <numeric>
 #include <span>
 #include <vector>
@@ -46,10 +47,11 @@ MedialAxis voronoi_subgraph(const DelaunayVoronoi& dv, std::span<const std::uint
   // two classes. Before any merge every triangle is its own class; meeting a zero-length edge
   // then stops the collection (false), since classes must be merged first.
   MedialAxis axis;
-  std::vector<int> vertex_of(triangles, -1);
+  // Written for each kept triangle before it is read, so never initialized: a class's root is
+  // its smallest triangle, met first in the ascending loop.
+  const auto vertex_of = std::make_unique_for_overwrite<int[]>(triangles);
   auto collect = [&] {
     axis = {};
-    std::fill(vertex_of.begin(), vertex_of.end(), -1);
     const auto kept = static_cast<std::size_t>(std::count_if(keep.begin(), keep.end(), [](std::uint8_t k) { return k != 0; }));
     axis.vertices.reserve(kept);
     axis.radii.reserve(kept);
@@ -57,12 +59,13 @@ MedialAxis voronoi_subgraph(const DelaunayVoronoi& dv, std::span<const std::uint
     for (int t = 0; t < triangles; ++t) {
       if (!keep[t]) continue;
       const int root = root_of(t);
-      if (vertex_of[root] < 0) {
-        vertex_of[root] = static_cast<int>(axis.vertices.size());
-        axis.vertices.push_back(dv.circumcenters[root]);
-        axis.radii.push_back(dv.circumradii[root]);
+      if (root == t) {
+        vertex_of[t] = static_cast<int>(axis.vertices.size());
+        axis.vertices.push_back(dv.circumcenters[t]);
+        axis.radii.push_back(dv.circumradii[t]);
+      } else {
+        vertex_of[t] = vertex_of[root];
       }
-      vertex_of[t] = vertex_of[root];
     }
     for (int t = 0; t < triangles; ++t) {
       if (!keep[t]) continue;

@@ -2,12 +2,12 @@
 // points, input it must refuse, and the invariants of its labels.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <numbers>
 #include <random>
 
 #include "core/registry.h"
-#include "labeling/dominant_points.h"
 #include "labeling/extract_shapes.h"
 #include "labeling/label_voronoi_vertices.h"
 #include "test_support.h"

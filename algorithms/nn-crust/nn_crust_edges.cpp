@@ -7,9 +7,11 @@ namespace {
 
 double squared_distance(Point2 a, Point2 b) { return dot(a - b, a - b); }
 
-// Keeps (site, squared distance) if it is nearer than the current best, ties to the smaller site.
+// Keeps (site, squared distance) if it is nearer than the current best, ties to the smaller
+// site. The first candidate is always kept: a squared distance can overflow to infinity
+// (coordinates beyond 1e154), and every site must still get a nearest neighbour.
 void keep_nearer(int& best, double& best_d2, int site, double d2) {
-  if (d2 < best_d2 || (d2 == best_d2 && site < best)) {
+  if (best < 0 || d2 < best_d2 || (d2 == best_d2 && site < best)) {
     best = site;
     best_d2 = d2;
   }

@@ -37,6 +37,9 @@ std::vector<DegenerateCase> degenerate_cases() {
   for (const auto& p : testing::uniform_circle(40)) huge.push_back({1e9 + 1e3 * p.x, 1e9 + 1e3 * p.y}), tiny.push_back(1e-9 * p);
   cases.push_back({"coordinates around 1e9", huge});
   cases.push_back({"coordinates around 1e-9", tiny});
+  // Squared distances overflow to infinity; found by fuzz_reconstruct (nn-crust read sites[-1]).
+  cases.push_back({"one coordinate of 1e160", {{1.02077327578e160, 1.1437001796735144}, {2.8e-16, 1.0}, {-0.101, 1.0}, {0.0, 0.0}}});
+  cases.push_back({"circle of radius 1e160", testing::uniform_circle(40, 1e160)});
   cases.push_back({"no point", {}});
   cases.push_back({"one point", {{1, 2}}});
   cases.push_back({"two points", {{1, 2}, {3, 4}}});

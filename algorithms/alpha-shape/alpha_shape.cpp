@@ -62,6 +62,11 @@ class AlphaShapeAlgorithm final : public Algorithm {
     AlphaShape shape(triangulation, 0, AlphaShape::REGULARIZED);
     double chosen = alpha;
     if (alpha == 0.0) {
+      // An empty spectrum means every squared circumradius rounded to zero (coordinates of
+      // denormal size): there is no alpha to choose, and no largest one to fall back on.
+      if (shape.alpha_begin() == shape.alpha_end()) {
+        throw InputError("alpha-shape: every triangle's squared circumradius rounds to zero in double precision; scale the points up");
+      }
       auto optimal = shape.find_optimal_alpha(static_cast<AlphaShape::size_type>(components));
       chosen = optimal != shape.alpha_end() ? *optimal : *std::prev(shape.alpha_end());
     }

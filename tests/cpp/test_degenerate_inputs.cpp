@@ -40,6 +40,10 @@ std::vector<DegenerateCase> degenerate_cases() {
   // Squared distances overflow to infinity; found by fuzz_reconstruct (nn-crust read sites[-1]).
   cases.push_back({"one coordinate of 1e160", {{1.02077327578e160, 1.1437001796735144}, {2.8e-16, 1.0}, {-0.101, 1.0}, {0.0, 0.0}}});
   cases.push_back({"circle of radius 1e160", testing::uniform_circle(40, 1e160)});
+  cases.push_back({"circle of radius 1e307", testing::uniform_circle(40, 1e307)});
+  cases.push_back({"corners near the largest double", {{-1.7e308, -1.7e308}, {1.7e308, -1.7e308}, {1.7e308, 1.7e308}, {-1.7e308, 1.7e308}, {0, 0}, {1e300, -3e307}}});
+  // Squared circumradii round to zero: alpha-shape's spectrum was empty and it read before it.
+  cases.push_back({"denormal coordinates", {{4e-320, 0}, {0, 4e-320}, {-4e-320, 0}, {0, -4e-320}, {1e-321, 1e-321}}});
   cases.push_back({"no point", {}});
   cases.push_back({"one point", {{1, 2}}});
   cases.push_back({"two points", {{1, 2}, {3, 4}}});

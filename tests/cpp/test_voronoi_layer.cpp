@@ -13,9 +13,9 @@
 namespace curvebench {
 namespace {
 
+using testing::corner_of;
 using testing::lattice_circle;
 using testing::uniform_circle;
-using testing::corner_of;
 using testing::voronoi_cell;
 
 void expect_consistent(const DelaunayVoronoi& dv) {

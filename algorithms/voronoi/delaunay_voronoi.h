@@ -10,6 +10,11 @@
 //      kept, so every Voronoi vertex has degree 3 and the zero-length Voronoi edges between
 //      coinciding vertices are reported by is_degenerate_voronoi_edge().
 //
+// Triangles are numbered so that Delaunay neighbours lie close in the arrays: by smallest site
+// when the points come in order along the curves, else in Z order of their centroids (see
+// faces_in_locality_order). It is deterministic for a given input; algorithms use it at most
+// to break exact ties and to order their output lists.
+//
 // Conventions: triangles are counter-clockwise; neighbors[t][i] is the triangle across the
 // edge opposite corner i (the edge from corner i+1 to corner i+2), or kInfinite if that edge
 // is on the convex hull (its dual Voronoi edge is an infinite ray).

@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <numbers>
 #include <random>
+#include <utility>
 
 #include "core/registry.h"
 #include "labeling/extract_shapes.h"
@@ -18,6 +20,8 @@ namespace {
 using testing::cycle_edges;
 using testing::cyclic_distance;
 using testing::lattice_circle;
+using testing::random_order;
+using testing::rose_in_curve_order;
 using testing::sample_polygon_evenly;
 using testing::star_polygon;
 using testing::uniform_circle;
@@ -165,6 +169,62 @@ TEST(Labeling, LabelsAreConsistentWithEveryOutput) {
   std::map<int, int> degree;
   for (const auto& e : extract_curve_and_dominant_points(dv, labels).curve_edges) ++degree[e[0]], ++degree[e[1]];
   for (int s = 0; s < dv.site_count(); ++s) EXPECT_EQ(degree[s], 2) << "sample " << s;
+}
+
+// Points in curve order and the same points shuffled get different triangle numberings from
+// the Voronoi layer (along the input, and Z order). On an epsilon-sample the labels are fixed
+// by the geometry, so every output must be the same, read back in the first file's indices.
+TEST(Labeling, OutputOfAnEpsilonSampleDoesNotDependOnThePointOrder) {
+  const int n = 3000;
+  const auto along = rose_in_curve_order(n, 9);
+  const auto order = random_order(n, 10);  // shuffled[i] = along[order[i]]
+  std::vector<Point2> shuffled;
+  for (int i : order) shuffled.push_back(along[i]);
+  const auto a = run_labeling(along), b = run_labeling(shuffled);
+
+  EXPECT_EQ(testing::sorted(*a.curve_edges), cycle_edges(n));
+  std::vector<Edge> b_curve;
+  for (const auto& e : *b.curve_edges) b_curve.push_back(make_edge(order[e[0]], order[e[1]]));
+  EXPECT_EQ(testing::sorted(b_curve), cycle_edges(n));
+
+  auto in_along_indices = [&](std::vector<int> dominant, bool from_shuffled) {
+    if (from_shuffled) {
+      for (int& i : dominant) i = order[i];
+    }
+    std::sort(dominant.begin(), dominant.end());
+    return dominant;
+  };
+  EXPECT_EQ(in_along_indices(*a.dominant_points, false), in_along_indices(*b.dominant_points, true));
+
+  // The medial axis as geometry, its vertices with radii and its edges as pairs of vertices,
+  // equal up to rounding: CGAL may list a triangle's corners in another rotation, and the
+  // computed circumcentre depends on which corner comes first (by up to 7e-12 here; the
+  // Voronoi layer keeps the relative error of a centre below about 1e-8).
+  auto geometry = [](const MedialAxis& axis) {
+    std::vector<std::array<double, 3>> disks;
+    for (std::size_t i = 0; i < axis.vertices.size(); ++i) disks.push_back({axis.vertices[i].x, axis.vertices[i].y, axis.radii[i]});
+    std::vector<std::array<double, 4>> edges;
+    for (const auto& e : axis.edges) {
+      const auto [p, q] = std::minmax(disks[e[0]], disks[e[1]]);
+      edges.push_back({p[0], p[1], q[0], q[1]});
+    }
+    std::sort(disks.begin(), disks.end());
+    std::sort(edges.begin(), edges.end());
+    return std::pair(disks, edges);
+  };
+  auto expect_near = [](const auto& a, const auto& b, const char* what) {
+    ASSERT_EQ(a.size(), b.size()) << what;
+    int far = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      for (std::size_t k = 0; k < a[i].size(); ++k) far += !(std::abs(a[i][k] - b[i][k]) <= 1e-9);
+    }
+    EXPECT_EQ(far, 0) << what;
+  };
+  const auto [a_disks, a_edges] = geometry(*a.medial_axis);
+  const auto [b_disks, b_edges] = geometry(*b.medial_axis);
+  ASSERT_GT(a_disks.size(), 1000u);
+  expect_near(a_disks, b_disks, "medial-axis vertices");
+  expect_near(a_edges, b_edges, "medial-axis edges");
 }
 
 TEST(Labeling, DuplicatesAreReportedAtTheirFirstOccurrence) {

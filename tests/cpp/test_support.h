@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <numeric>
+#include <random>
 #include <vector>
 
 #include "core/point.h"
@@ -102,6 +104,30 @@ inline std::vector<Point2> star_polygon(double inner) {
     polygon.push_back({r * std::cos(t), r * std::sin(t)});
   }
   return polygon;
+}
+
+// n points at random positions along the rose r = 1 + 0.3 cos 5t (the benchmark's smooth
+// curve), in order along it: counter-clockwise by parameter. Fixed seed.
+inline std::vector<Point2> rose_in_curve_order(int n, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi);
+  std::vector<double> t(n);
+  for (double& value : t) value = angle(rng);
+  std::sort(t.begin(), t.end());
+  std::vector<Point2> points;
+  for (double value : t) {
+    const double r = 1 + 0.3 * std::cos(5 * value);
+    points.push_back({r * std::cos(value), r * std::sin(value)});
+  }
+  return points;
+}
+
+// A random permutation of 0 .. n-1. Fixed seed.
+inline std::vector<int> random_order(int n, unsigned seed) {
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::shuffle(order.begin(), order.end(), std::mt19937(seed));
+  return order;
 }
 
 // Cyclic distance between sample indices along a closed curve of n samples.

@@ -15,6 +15,8 @@ namespace {
 
 using testing::corner_of;
 using testing::lattice_circle;
+using testing::random_order;
+using testing::rose_in_curve_order;
 using testing::uniform_circle;
 using testing::voronoi_cell;
 
@@ -48,6 +50,48 @@ TEST(VoronoiLayer, ArraysAreConsistentOnRandomAndCocircularInput) {
   for (int i = 0; i < 10; ++i)
     for (int j = 0; j < 10; ++j) grid.push_back({double(i), double(j)});
   expect_consistent(build_delaunay_voronoi(grid));
+}
+
+// The triangle numbering (faces_in_locality_order): by smallest site when the points run along
+// the curve in either direction, in Z order otherwise. Either way Delaunay neighbours are close
+// in the arrays. Here the median gap is 2 along the curve and 183 in Z order; in a random
+// numbering it would be about 0.29 of the 7,335 triangles.
+TEST(VoronoiLayer, TrianglesAreNumberedAlongInputInCurveOrderAndInZOrderOtherwise) {
+  auto smallest_sites = [](const DelaunayVoronoi& dv) {
+    std::vector<int> smallest;
+    for (const auto& tri : dv.triangles) smallest.push_back(*std::min_element(tri.begin(), tri.end()));
+    return smallest;
+  };
+  auto median_neighbour_gap = [](const DelaunayVoronoi& dv) {
+    std::vector<int> gaps;
+    for (int t = 0; t < dv.triangle_count(); ++t) {
+      for (int other : dv.neighbors[t]) {
+        if (other != kInfinite) gaps.push_back(std::abs(other - t));
+      }
+    }
+    std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
+    return gaps[gaps.size() / 2];
+  };
+  const auto counter_clockwise = rose_in_curve_order(4000, 5);
+  std::vector<Point2> shuffled;
+  for (int i : random_order(4000, 6)) shuffled.push_back(counter_clockwise[i]);
+  struct Case {
+    std::vector<Point2> points;
+    bool along_the_curve;
+  };
+  // On a circle every consecutive pair is a hull edge, in one face and one orientation only.
+  const auto circle = uniform_circle(3000);
+  const Case cases[] = {{counter_clockwise, true},
+                        {{counter_clockwise.rbegin(), counter_clockwise.rend()}, true},
+                        {shuffled, false},
+                        {circle, true},
+                        {{circle.rbegin(), circle.rend()}, true}};
+  for (const auto& [points, along_the_curve] : cases) {
+    const auto dv = build_delaunay_voronoi(points);
+    expect_consistent(dv);
+    EXPECT_EQ(std::ranges::is_sorted(smallest_sites(dv)), along_the_curve);
+    EXPECT_LT(median_neighbour_gap(dv), dv.triangle_count() / 20);
+  }
 }
 
 TEST(VoronoiLayer, ExactlyCocircularSitesGiveOneDegenerateVoronoiVertex) {

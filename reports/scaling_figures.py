@@ -80,8 +80,8 @@ def _what_was_run(suite: ScalingSuite) -> str:
         skipped_text = f" Not run: {listed}."
     return (f"curvebench_benchmark ({suite.source.name}, {context.get('date', 'undated')}, {machine}): "
             f"the bare CGAL Delaunay construction and {len(suite.algorithms())} algorithms with default parameters "
-            f"on the inputs {', '.join(suite.inputs())} (points on the rose r = 1 + 0.3 cos 5t; the noisy one moved "
-            f"along the normal by Gaussian noise of half the mean spacing) at n = {size_text}.{skipped_text}")
+            f"on the inputs {', '.join(suite.inputs())} (points on the rose r = 1 + 0.3 cos 5t in order along it; the noisy one moved "
+            f"along the normal by Gaussian noise of half the mean spacing; the shuffled one in random order) at n = {size_text}.{skipped_text}")
 
 
 def runtime_figure(suite: ScalingSuite, out_dir: pathlib.Path) -> SavedFigure:

@@ -1,10 +1,13 @@
 // Scaling suite: every algorithm against the bare CGAL Delaunay construction of the same
-// points, side by side in one run, on two inputs at n = 10^3 ... 10^6 (10^7 with --max_n):
+// points, side by side in one run, on three inputs at n = 10^3 ... 10^6 (10^7 with --max_n):
 //   smooth  n random positions along the rose r = 1 + 0.3 cos(5t), a smooth closed curve
 //           with five pseudo-concavities;
 //   noisy   the same positions, each moved along the curve normal by a Gaussian amount of
 //           standard deviation half the mean sample spacing (curve length / n), so that the
-//           noise stays the same relative to the sampling at every n.
+//           noise stays the same relative to the sampling at every n;
+//   shuffled the smooth points in random order. The other two come in order along the curve,
+//           as traced outlines do, and the Voronoi layer numbers the triangles along that
+//           order; here it falls back to Z order (see faces_in_locality_order).
 // Benchmarks are named <algorithm>/<input>/n:<n> ("delaunay" is the bare construction).
 //
 // Counters of each row:
@@ -58,7 +61,7 @@
 namespace curvebench {
 namespace {
 
-const std::vector<std::string> kInputs = {"smooth", "noisy"};
+const std::vector<std::string> kInputs = {"smooth", "noisy", "shuffled"};
 
 struct Settings {
   long long max_n = 1'000'000;
@@ -93,7 +96,7 @@ double rose_length() {
   return length;
 }
 
-// The points of `input` ("smooth" or "noisy") at n. Fixed seeds: every run times the same points.
+// The points of `input` ("smooth", "noisy" or "shuffled") at n. Fixed seeds: every run times the same points.
 std::vector<Point2> make_points(const std::string& input, int n) {
   std::mt19937_64 rng(20190501u + static_cast<unsigned>(n));
   std::uniform_real_distribution<double> unit(0.0, 1.0);
@@ -111,6 +114,7 @@ std::vector<Point2> make_points(const std::string& input, int n) {
       points[i] = {points[i].x + shift * normal.x, points[i].y + shift * normal.y};
     }
   }
+  if (input == "shuffled") std::shuffle(points.begin(), points.end(), rng);
   return points;
 }
 

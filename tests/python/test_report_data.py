@@ -168,7 +168,7 @@ def test_benchmark_json_feeds_the_report_with_per_run_memory_and_budget_skips(be
     assert result.returncode == 0, result.stderr
     suite = read_scaling_suite(out)
     assert {(r.algorithm, r.input, r.n) for r in suite.runs} == {
-        (a, i, n) for a in ("delaunay", "labeling") for i in ("smooth", "noisy") for n in (1000, 10000)}
+        (a, i, n) for a in ("delaunay", "labeling") for i in ("smooth", "noisy", "shuffled") for n in (1000, 10000)}
     for run in suite.runs:
         if run.n == 1000:
             assert run.skip_reason is None and run.seconds > 0

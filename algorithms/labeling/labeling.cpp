@@ -1,5 +1,7 @@
 #include "labeling/labeling.h"
 
+#include <algorithm>
+
 #include "core/phase_timer.h"
 #include "labeling/extract_shapes.h"
 #include "labeling/label_voronoi_vertices.h"
@@ -29,6 +31,7 @@ class Labeling final : public Algorithm {
     result.curve_edges = to_input_indices(dv, std::move(curve));
     result.medial_axis = extract_interior_medial_axis(dv, labels);
     for (int& site : dominant) site = dv.input_of_site[site];
+    std::sort(dominant.begin(), dominant.end());  // in input order, whatever the site numbering
     result.dominant_points = std::move(dominant);
     timer.lap("extract");
     result.timing_ms = timer.finish();

@@ -148,34 +148,38 @@ void triangulate_sites(std::span<const Point2> points, cgal::Delaunay& dt, Delau
   dv.dimension = dt.dimension();
 }
 
-// The finite faces in the order that numbers the triangles, with each face's info set to its
-// position in that order and every infinite face's to kInfinite. CGAL's face container follows
-// the randomized insertion order, so two thirds of the neighbours of a face lie thousands of
-// faces away from it, and every walk over the triangles (labeling, medial axis, crusts) would
-// wait on memory at each step once the arrays outgrow the cache. Two orders keep neighbours
-// close, and the input decides between them:
-// - Points that run along the curves (most consecutive points are Delaunay neighbours, as in
-//   outlines traced along a contour): by smallest site, so the fans of consecutive samples
-//   follow one another. A walk along the curve, as the labeler's is, then reads every array
-//   in order; in Z order it jumps at each quadtree boundary (at 10^6 points on the benchmark's
-//   rose, 37 against 52 ns/point for the labeling walk).
-// - Any other order: Z order (Morton order) of the centroids.
-// Both are stable radix sorts, so the numbering is deterministic.
-std::vector<cgal::Delaunay::Face_handle> faces_in_locality_order(cgal::Delaunay& dt, std::span<const Point2> sites) {
-  using Face = cgal::Delaunay::Face_handle;
-  double min_x = sites[0].x, max_x = min_x, min_y = sites[0].y, max_y = min_y;
-  for (const auto& p : sites) {
+// Sorts `items` by key(item), a key below 2^key_bits: a least-significant-digit radix sort,
+// so it is stable and the numberings it makes are deterministic.
+template <class T, class Key>
+void radix_sort(std::vector<T>& items, int key_bits, Key key) {
+  std::vector<T> buffer(items.size());
+  constexpr int kDigitBits = 12;  // 4096 counters stay in the L1 cache; two passes up to 2^24 keys
+  constexpr std::uint32_t kDigitMask = (1u << kDigitBits) - 1;
+  for (int shift = 0; shift < key_bits; shift += kDigitBits) {
+    std::array<std::uint32_t, kDigitMask + 2> start{};
+    for (const auto& item : items) ++start[((key(item) >> shift) & kDigitMask) + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    for (const auto& item : items) buffer[start[(key(item) >> shift) & kDigitMask]++] = item;
+    items.swap(buffer);
+  }
+}
+
+// Renumbers the sites in Z order (Morton order) of their positions: sites, input_of_site,
+// site_of_input and the info of every vertex of `dt`.
+void renumber_sites_in_z_order(cgal::Delaunay& dt, DelaunayVoronoi& dv) {
+  const int n = dv.site_count();
+  double min_x = dv.sites[0].x, max_x = min_x, min_y = dv.sites[0].y, max_y = min_y;
+  for (const auto& p : dv.sites) {
     min_x = std::min(min_x, p.x), max_x = std::max(max_x, p.x);
     min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
   }
-  // A grid of about 4 cells a face (cells = 2^(2 * grid_bits)), at most 2^16 a side; a
-  // centroid sum (three times the centroid) scaled to [0, cells a side - 1].
-  const auto face_count = static_cast<double>(std::max<std::size_t>(dt.number_of_faces(), 1));
-  const int grid_bits = std::clamp(static_cast<int>(std::ceil(0.5 * std::log2(face_count))) + 1, 1, 16);
-  const double last_cell = std::ldexp(1.0, grid_bits) - 1;
-  const double scale_x = max_x > min_x ? last_cell / (3 * (max_x - min_x)) : 0.0;
-  const double scale_y = max_y > min_y ? last_cell / (3 * (max_y - min_y)) : 0.0;
-  auto to_grid = [last_cell](double v) {  // NaN (coordinates near the limits of double) counts as 0
+  // The finest grid 32-bit keys allow: samples of a curve crowd into few cells of a coarser
+  // one, and within a cell they would keep their input order.
+  static constexpr int kGridBits = 16;
+  static constexpr double last_cell = (1 << kGridBits) - 1;
+  const double scale_x = max_x > min_x ? last_cell / (max_x - min_x) : 0.0;
+  const double scale_y = max_y > min_y ? last_cell / (max_y - min_y) : 0.0;
+  auto to_grid = [](double v) {  // NaN (coordinates near the limits of double) counts as 0
     return v > 0 ? static_cast<std::uint32_t>(std::min(v, last_cell)) : 0u;
   };
   auto spread_bits = [](std::uint32_t v) {  // bit i of v to bit 2i
@@ -184,10 +188,48 @@ std::vector<cgal::Delaunay::Face_handle> faces_in_locality_order(cgal::Delaunay&
     v = (v | (v << 2)) & 0x33333333u;
     return (v | (v << 1)) & 0x55555555u;
   };
+  std::vector<std::pair<std::uint32_t, int>> keyed(n);  // (Morton key, old site)
+  for (int s = 0; s < n; ++s) {
+    const Point2 p = dv.sites[s];
+    keyed[s] = {spread_bits(to_grid((p.x - min_x) * scale_x)) | (spread_bits(to_grid((p.y - min_y) * scale_y)) << 1), s};
+  }
+  radix_sort(keyed, 2 * kGridBits, [](const auto& k) { return k.first; });
+  std::vector<int> new_of_old(n);
+  std::vector<Point2> sites(n);
+  std::vector<int> input_of_site(n);
+  for (int s = 0; s < n; ++s) {
+    const int old = keyed[s].second;
+    new_of_old[old] = s;
+    sites[s] = dv.sites[old];
+    input_of_site[s] = dv.input_of_site[old];
+  }
+  dv.sites.swap(sites);
+  dv.input_of_site.swap(input_of_site);
+  for (int& site : dv.site_of_input) site = new_of_old[site];
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) v->info() = new_of_old[v->info()];
+}
+
+// The finite faces in the order that numbers the triangles, with each face's info set to its
+// position in that order and every infinite face's to kInfinite. CGAL's face container follows
+// the randomized insertion order, so two thirds of the neighbours of a face lie thousands of
+// faces away from it, and every walk over the triangles (labeling, medial axis, crusts) would
+// wait on memory at each step once the arrays outgrow the cache. Faces are ordered by their
+// smallest site, so the fans of consecutive sites follow one another, and the sites are put in
+// an order where consecutive sites are close:
+// - Points that run along the curves (most consecutive points are Delaunay neighbours, as in
+//   outlines traced along a contour) keep their order. A walk along the curve, as the
+//   labeler's is, then reads every array in sequence (at 10^6 points on the benchmark's rose,
+//   37 ns/point for the labeling walk, against 52 with triangles in Z order).
+// - Any other order is replaced by Z order (Morton order): on the same points shuffled, the
+//   labeling walk takes 49 ns/point, against 128 with sites in input order.
+std::vector<cgal::Delaunay::Face_handle> faces_in_locality_order(cgal::Delaunay& dt, DelaunayVoronoi& dv) {
+  using Face = cgal::Delaunay::Face_handle;
   struct Keyed {
-    std::uint32_t z_key;
     std::uint32_t smallest_site;
     Face face;
+  };
+  auto smallest_site = [](Face f) {
+    return static_cast<std::uint32_t>(std::min({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}));
   };
   std::vector<Keyed> keyed;
   keyed.reserve(dt.number_of_faces());
@@ -199,38 +241,23 @@ std::vector<cgal::Delaunay::Face_handle> faces_in_locality_order(cgal::Delaunay&
       f->info() = kInfinite;
       continue;
     }
-    double sx = -3 * min_x, sy = -3 * min_y;
-    std::array<int, 3> tri;
     for (int i = 0; i < 3; ++i) {
-      sx += f->vertex(i)->point().x(), sy += f->vertex(i)->point().y();
-      tri[i] = f->vertex(i)->info();
-    }
-    for (int i = 0; i < 3; ++i) {
-      const int step = tri[(i + 1) % 3] - tri[i];
+      const int step = f->vertex((i + 1) % 3)->info() - f->vertex(i)->info();
       forward_pairs += step == 1;
       backward_pairs += step == -1;
     }
-    keyed.push_back({spread_bits(to_grid(sx * scale_x)) | (spread_bits(to_grid(sy * scale_y)) << 1),
-                     static_cast<std::uint32_t>(std::min({tri[0], tri[1], tri[2]})), f});
+    keyed.push_back({smallest_site(f), f});
   }
   // Along the curves if at least half of the consecutive pairs are Delaunay edges. An
   // epsilon-sample in curve order has all of them but one per curve; noise of half the
-  // sample spacing (the benchmark's noisy input) keeps most of them.
-  const long long consecutive_pairs = static_cast<long long>(sites.size()) - 1;
-  const bool along_the_curves = 2 * std::max(forward_pairs, backward_pairs) >= consecutive_pairs;
-  const auto key = along_the_curves ? &Keyed::smallest_site : &Keyed::z_key;
-  const int key_bits = along_the_curves ? std::bit_width(static_cast<std::uint32_t>(sites.size() - 1)) : 2 * grid_bits;
-
-  std::vector<Keyed> buffer(keyed.size());
-  constexpr int kDigitBits = 12;  // 4096 counters stay in the L1 cache; two passes up to 2^24 keys
-  constexpr std::uint32_t kDigitMask = (1u << kDigitBits) - 1;
-  for (int shift = 0; shift < key_bits; shift += kDigitBits) {  // least significant digit first: stable
-    std::array<std::uint32_t, kDigitMask + 2> start{};
-    for (const auto& k : keyed) ++start[((k.*key >> shift) & kDigitMask) + 1];
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    for (const auto& k : keyed) buffer[start[(k.*key >> shift) & kDigitMask]++] = k;
-    keyed.swap(buffer);
+  // sample spacing (the benchmark's noisy input) keeps 95% of them.
+  const long long consecutive_pairs = static_cast<long long>(dv.site_count()) - 1;
+  if (2 * std::max(forward_pairs, backward_pairs) < consecutive_pairs) {
+    renumber_sites_in_z_order(dt, dv);
+    for (auto& k : keyed) k.smallest_site = smallest_site(k.face);
   }
+  radix_sort(keyed, std::bit_width(static_cast<std::uint32_t>(dv.site_count() - 1)),
+             [](const Keyed& k) { return k.smallest_site; });
   std::vector<Face> faces(keyed.size());
   for (std::size_t i = 0; i < keyed.size(); ++i) {
     faces[i] = keyed[i].face;
@@ -299,7 +326,7 @@ DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points) {
     return dv;
   }
 
-  std::vector<cgal::Delaunay::Face_handle> faces = faces_in_locality_order(dt, dv.sites);
+  std::vector<cgal::Delaunay::Face_handle> faces = faces_in_locality_order(dt, dv);
   const int t = static_cast<int>(faces.size());
   // Filled in order of id by push_back into reserved storage: each array is written once,
   // without the zero-filling pass of resize.

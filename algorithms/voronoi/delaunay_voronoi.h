@@ -10,10 +10,11 @@
 //      kept, so every Voronoi vertex has degree 3 and the zero-length Voronoi edges between
 //      coinciding vertices are reported by is_degenerate_voronoi_edge().
 //
-// Triangles are numbered so that Delaunay neighbours lie close in the arrays: by smallest site
-// when the points come in order along the curves, else in Z order of their centroids (see
-// faces_in_locality_order). It is deterministic for a given input; algorithms use it at most
-// to break exact ties and to order their output lists.
+// Sites and triangles are numbered so that neighbours lie close in the arrays: sites in input
+// order when the points come in order along the curves (most consecutive points are Delaunay
+// neighbours), else in Z order of their positions; triangles by smallest site (see
+// faces_in_locality_order). The numbering is deterministic for a given input; algorithms use
+// it at most to break exact ties and to order their output lists, and report input indices.
 //
 // Conventions: triangles are counter-clockwise; neighbors[t][i] is the triangle across the
 // edge opposite corner i (the edge from corner i+1 to corner i+2), or kInfinite if that edge
@@ -39,8 +40,8 @@ struct DelaunayVoronoi {
   // 2: a proper triangulation; 1: all sites collinear (no triangles); 0: one site; -1: none.
   int dimension = -1;
 
-  std::vector<Point2> sites;          // distinct points in order of first occurrence
-  std::vector<int> input_of_site;     // sites[s] == input[input_of_site[s]]
+  std::vector<Point2> sites;          // distinct points, each once (see the numbering above)
+  std::vector<int> input_of_site;     // sites[s] == input[input_of_site[s]], its first occurrence
   std::vector<int> site_of_input;     // input index -> site index
 
   std::vector<std::array<int, 3>> triangles;  // site indices, counter-clockwise
@@ -71,8 +72,8 @@ int bare_delaunay_vertex_count(std::span<const Point2> points);
 // The crust's triangulation (Amenta, Bern, Eppstein 1998): the Delaunay edges between two
 // sites in the triangulation of the sites together with all their Voronoi vertices, as site
 // pairs, each once, in no particular order. `sites` receives the site fields of
-// build_delaunay_voronoi (sites, input_of_site, site_of_input, dimension) and nothing else;
-// below dimension 2 there are no edges. No triangle arrays are built: the Voronoi vertices
+// build_delaunay_voronoi (sites, input_of_site, site_of_input, dimension), sites always in
+// order of first occurrence, and nothing else; below dimension 2 there are no edges. No triangle arrays are built: the Voronoi vertices
 // are read straight off the sites' CGAL triangulation. A Voronoi vertex equal to a site counts as that site; one whose computed
 // position is not finite (a hull triangle flat to rounding, its centre beyond the range of
 // doubles) is left out: its only effect would be on hull edges. `timer` laps "delaunay"

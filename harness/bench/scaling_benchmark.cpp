@@ -6,8 +6,8 @@
 //           standard deviation half the mean sample spacing (curve length / n), so that the
 //           noise stays the same relative to the sampling at every n;
 //   shuffled the smooth points in random order. The other two come in order along the curve,
-//           as traced outlines do, and the Voronoi layer numbers the triangles along that
-//           order; here it falls back to Z order (see faces_in_locality_order).
+//           as traced outlines do, and the Voronoi layer keeps that order; here it puts the
+//           sites in Z order (see faces_in_locality_order).
 // Benchmarks are named <algorithm>/<input>/n:<n> ("delaunay" is the bare construction).
 //
 // Counters of each row:

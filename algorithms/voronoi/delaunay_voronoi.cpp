@@ -153,7 +153,7 @@ void triangulate_sites(std::span<const Point2> points, cgal::Delaunay& dt, Delau
 template <class T, class Key>
 void radix_sort(std::vector<T>& items, int key_bits, Key key) {
   std::vector<T> buffer(items.size());
-  constexpr int kDigitBits = 12;  // 4096 counters stay in the L1 cache; two passes up to 2^24 keys
+  constexpr int kDigitBits = 12;  // 4096 counters stay in the L1 cache; two passes for keys below 2^24
   constexpr std::uint32_t kDigitMask = (1u << kDigitBits) - 1;
   for (int shift = 0; shift < key_bits; shift += kDigitBits) {
     std::array<std::uint32_t, kDigitMask + 2> start{};
@@ -209,20 +209,21 @@ void renumber_sites_in_z_order(cgal::Delaunay& dt, DelaunayVoronoi& dv) {
   for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) v->info() = new_of_old[v->info()];
 }
 
-// The finite faces in the order that numbers the triangles, with each face's info set to its
-// position in that order and every infinite face's to kInfinite. CGAL's face container follows
-// the randomized insertion order, so two thirds of the neighbours of a face lie thousands of
-// faces away from it, and every walk over the triangles (labeling, medial axis, crusts) would
-// wait on memory at each step once the arrays outgrow the cache. Faces are ordered by their
-// smallest site, so the fans of consecutive sites follow one another, and the sites are put in
-// an order where consecutive sites are close:
+// Numbers the sites and the triangles so that neighbours lie close in the arrays. Returns the
+// finite faces in triangle order, with each face's info set to its position in that order and
+// every infinite face's to kInfinite. CGAL's face container follows the randomized insertion
+// order, so two thirds of the neighbours of a face lie thousands of faces away from it, and
+// every walk over the triangles (labeling, medial axis, crusts) would wait on memory at each
+// step once the arrays outgrow the cache. Faces are ordered by their smallest site, so the
+// fans of consecutive sites follow one another, and the sites are put in an order where
+// consecutive sites are close:
 // - Points that run along the curves (most consecutive points are Delaunay neighbours, as in
 //   outlines traced along a contour) keep their order. A walk along the curve, as the
 //   labeler's is, then reads every array in sequence (at 10^6 points on the benchmark's rose,
-//   37 ns/point for the labeling walk, against 52 with triangles in Z order).
-// - Any other order is replaced by Z order (Morton order): on the same points shuffled, the
-//   labeling walk takes 49 ns/point, against 128 with sites in input order.
-std::vector<cgal::Delaunay::Face_handle> faces_in_locality_order(cgal::Delaunay& dt, DelaunayVoronoi& dv) {
+//   37 ns/point for the labeling walk, against 52 with triangles in Z order of centroids).
+// - Any other order is replaced by Z order (renumber_sites_in_z_order): on the same points
+//   shuffled, the labeling walk takes 53 ns/point, against 122 with sites in input order.
+std::vector<cgal::Delaunay::Face_handle> number_sites_and_faces(cgal::Delaunay& dt, DelaunayVoronoi& dv) {
   using Face = cgal::Delaunay::Face_handle;
   struct Keyed {
     std::uint32_t smallest_site;
@@ -326,7 +327,7 @@ DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points) {
     return dv;
   }
 
-  std::vector<cgal::Delaunay::Face_handle> faces = faces_in_locality_order(dt, dv);
+  std::vector<cgal::Delaunay::Face_handle> faces = number_sites_and_faces(dt, dv);
   const int t = static_cast<int>(faces.size());
   // Filled in order of id by push_back into reserved storage: each array is written once,
   // without the zero-filling pass of resize.

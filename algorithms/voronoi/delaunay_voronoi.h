@@ -13,7 +13,7 @@
 // Sites and triangles are numbered so that neighbours lie close in the arrays: sites in input
 // order when the points come in order along the curves (most consecutive points are Delaunay
 // neighbours), else in Z order of their positions; triangles by smallest site (see
-// faces_in_locality_order). The numbering is deterministic for a given input; algorithms use
+// number_sites_and_faces). The numbering is deterministic for a given input; algorithms use
 // it at most to break exact ties and to order their output lists, and report input indices.
 //
 // Conventions: triangles are counter-clockwise; neighbors[t][i] is the triangle across the

@@ -7,7 +7,7 @@
 //           noise stays the same relative to the sampling at every n;
 //   shuffled the smooth points in random order. The other two come in order along the curve,
 //           as traced outlines do, and the Voronoi layer keeps that order; here it puts the
-//           sites in Z order (see faces_in_locality_order).
+//           sites in Z order (see number_sites_and_faces).
 // Benchmarks are named <algorithm>/<input>/n:<n> ("delaunay" is the bare construction).
 //
 // Counters of each row:

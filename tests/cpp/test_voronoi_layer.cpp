@@ -53,7 +53,7 @@ TEST(VoronoiLayer, ArraysAreConsistentOnRandomAndCocircularInput) {
   expect_consistent(build_delaunay_voronoi(grid));
 }
 
-// The numbering (faces_in_locality_order): sites keep the input order when the points run
+// The numbering (number_sites_and_faces): sites keep the input order when the points run
 // along the curve in either direction and are put in Z order otherwise; triangles follow
 // their smallest site. Either way neighbours are close in the arrays. On the rose, the median
 // gap between neighbouring triangles is 2 (4 in Z order), and consecutive sites are 0.0015

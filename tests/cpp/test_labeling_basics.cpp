@@ -171,9 +171,9 @@ TEST(Labeling, LabelsAreConsistentWithEveryOutput) {
   for (int s = 0; s < dv.site_count(); ++s) EXPECT_EQ(degree[s], 2) << "sample " << s;
 }
 
-// Points in curve order and the same points shuffled get different triangle numberings from
-// the Voronoi layer (along the input, and Z order). On an epsilon-sample the labels are fixed
-// by the geometry, so every output must be the same, read back in the first file's indices.
+// Points in curve order and the same points shuffled are numbered differently by the Voronoi
+// layer (sites in input order, and in Z order). On an epsilon-sample the labels are fixed by
+// the geometry, so every output must be the same, read back in the first file's indices.
 TEST(Labeling, OutputOfAnEpsilonSampleDoesNotDependOnThePointOrder) {
   const int n = 3000;
   const auto along = rose_in_curve_order(n, 9);

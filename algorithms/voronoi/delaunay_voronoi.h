@@ -73,8 +73,9 @@ int bare_delaunay_vertex_count(std::span<const Point2> points);
 // sites in the triangulation of the sites together with all their Voronoi vertices, as site
 // pairs, each once, in no particular order. `sites` receives the site fields of
 // build_delaunay_voronoi (sites, input_of_site, site_of_input, dimension), sites always in
-// order of first occurrence, and nothing else; below dimension 2 there are no edges. No triangle arrays are built: the Voronoi vertices
-// are read straight off the sites' CGAL triangulation. A Voronoi vertex equal to a site counts as that site; one whose computed
+// order of first occurrence, and nothing else; below dimension 2 there are no edges. No
+// triangle arrays are built: the Voronoi vertices are read straight off the sites' CGAL
+// triangulation. A Voronoi vertex equal to a site counts as that site; one whose computed
 // position is not finite (a hull triangle flat to rounding, its centre beyond the range of
 // doubles) is left out: its only effect would be on hull edges. `timer` laps "delaunay"
 // once the sites are triangulated.

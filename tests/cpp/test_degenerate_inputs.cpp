@@ -104,9 +104,7 @@ std::vector<Point2> jittered_rose(int count) {
   std::vector<Point2> points;
   std::mt19937_64 rng(11);
   for (int k = 0; k < count; ++k) {
-    const double t = 2 * std::numbers::pi * (k + 0.3 * static_cast<double>(rng() >> 11) * 0x1.0p-53) / count;
-    const double r = 1 + 0.3 * std::cos(5 * t);
-    points.push_back({r * std::cos(t), r * std::sin(t)});
+    points.push_back(testing::rose_point(2 * std::numbers::pi * (k + 0.3 * static_cast<double>(rng() >> 11) * 0x1.0p-53) / count));
   }
   return points;
 }

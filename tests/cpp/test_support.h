@@ -106,8 +106,14 @@ inline std::vector<Point2> star_polygon(double inner) {
   return polygon;
 }
 
-// n points at random positions along the rose r = 1 + 0.3 cos 5t (the benchmark's smooth
-// curve), in order along it: counter-clockwise by parameter. Fixed seed.
+// The point at parameter t of the rose r = 1 + 0.3 cos 5t, the benchmark's smooth curve.
+inline Point2 rose_point(double t) {
+  const double r = 1 + 0.3 * std::cos(5 * t);
+  return {r * std::cos(t), r * std::sin(t)};
+}
+
+// n points at random positions along the rose, in order along it: counter-clockwise by
+// parameter. Fixed seed.
 inline std::vector<Point2> rose_in_curve_order(int n, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi);
@@ -115,10 +121,7 @@ inline std::vector<Point2> rose_in_curve_order(int n, unsigned seed) {
   for (double& value : t) value = angle(rng);
   std::sort(t.begin(), t.end());
   std::vector<Point2> points;
-  for (double value : t) {
-    const double r = 1 + 0.3 * std::cos(5 * value);
-    points.push_back({r * std::cos(value), r * std::sin(value)});
-  }
+  for (double value : t) points.push_back(rose_point(value));
   return points;
 }
 

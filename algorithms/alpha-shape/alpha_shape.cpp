@@ -1,5 +1,4 @@
-#include "alpha-shape/alpha_shape.h"
-
+// The "alpha-shape" algorithm: the boundary of CGAL's regularized alpha shape of the sites.
 #include <CGAL/Alpha_shape_2.h>
 #include <CGAL/Alpha_shape_face_base_2.h>
 #include <CGAL/Alpha_shape_vertex_base_2.h>
@@ -10,9 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <utility>
 
-#include "core/phase_timer.h"
+#include "core/registry.h"
 #include "voronoi/delaunay_voronoi.h"
 
 namespace curvebench {
@@ -27,33 +27,26 @@ using AlphaShape = CGAL::Alpha_shape_2<Triangulation>;
 
 class AlphaShapeAlgorithm final : public Algorithm {
  public:
-  std::string name() const override { return "alpha-shape"; }
-  std::string description() const override {
-    return "Boundary of CGAL's regularized alpha shape (Alpha_shape_2), alpha from CGAL's optimal alpha unless given";
-  }
-  unsigned outputs() const override { return kCurve; }
-  std::vector<ParameterSpec> parameters() const override {
-    return {{"alpha", 0.0,
-             "squared radius of the alpha disk in squared input units (CGAL convention); 0: the optimal alpha, the "
-             "smallest at which every sample is on the shape and it has at most `components` solid components"},
-            {"components", 1.0, "solid components allowed when choosing alpha automatically: the number of curves"}};
+  const AlgorithmInfo& info() const override {
+    static const AlgorithmInfo about{
+        "alpha-shape",
+        "Boundary of CGAL's regularized alpha shape (Alpha_shape_2), alpha from CGAL's optimal alpha unless given",
+        kCurve,
+        {real_parameter("alpha", 0.0, 0.0, std::numeric_limits<double>::max(),
+                        "squared radius of the alpha disk in squared input units (CGAL convention); 0: the optimal "
+                        "alpha, the smallest at which every sample is on the shape and it has at most `components` "
+                        "solid components"),
+         integer_parameter("components", 1, 1, 1000000000,
+                           "solid components allowed when choosing alpha automatically: the number of curves")},
+        SiteInput::kDelaunay};
+    return about;
   }
 
-  Reconstruction reconstruct(std::span<const Point2> points, const Parameters& given) const override {
-    const Parameters params = resolve_parameters(parameters(), given, name());
-    const double alpha = params.at("alpha");
-    const double components = params.at("components");
-    if (!(alpha >= 0.0) || !std::isfinite(alpha)) throw InputError("alpha-shape: alpha must be a number >= 0");
-    if (!(components >= 1.0) || components != std::floor(components) || components > 1e9) {
-      throw InputError("alpha-shape: components must be a whole number >= 1");
-    }
-    PhaseTimer timer;
-    // The shared layer removes duplicates and rejects input without a closed curve, with the
-    // same messages as every other algorithm; CGAL then triangulates the distinct sites.
-    const DelaunayVoronoi dv = build_delaunay_voronoi(points);
-    timer.lap("delaunay");
-    require_triangulation(dv, name());
-
+  SiteResult run(const Sites& sites, const ParameterValues& params, PhaseTimer& timer) const override {
+    const double alpha = params.real("alpha");
+    const auto components = params.integer("components");
+    const DelaunayVoronoi& dv = *sites.delaunay;
+    // CGAL's alpha shape needs its own triangulation type; it triangulates the distinct sites.
     std::vector<std::pair<Kernel::Point_2, int>> indexed;
     indexed.reserve(dv.sites.size());
     for (int s = 0; s < dv.site_count(); ++s) indexed.emplace_back(Kernel::Point_2(dv.sites[s].x, dv.sites[s].y), s);
@@ -80,17 +73,14 @@ class AlphaShapeAlgorithm final : public Algorithm {
       edges.push_back(make_edge(face->vertex(AlphaShape::ccw(i))->info(), face->vertex(AlphaShape::cw(i))->info()));
     }
     std::sort(edges.begin(), edges.end());
-    Reconstruction result;
-    result.distinct_points = dv.site_count();
-    result.curve_edges = to_input_indices(dv, std::move(edges));
+    SiteResult result;
+    result.curve_edges = std::move(edges);
     timer.lap("extract");
-    result.timing_ms = timer.finish();
     return result;
   }
 };
 
+CURVEBENCH_REGISTER_ALGORITHM(AlphaShapeAlgorithm);
+
 }  // namespace
-
-std::unique_ptr<Algorithm> make_alpha_shape_algorithm() { return std::make_unique<AlphaShapeAlgorithm>(); }
-
 }  // namespace curvebench

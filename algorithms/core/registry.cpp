@@ -1,31 +1,46 @@
 #include "core/registry.h"
 
-#include "alpha-shape/alpha_shape.h"
-#include "crust/crust.h"
-#include "labeling/labeling.h"
-#include "local-crust/local_crust.h"
-#include "nn-crust/nn_crust.h"
-#include "optimal-transport/optimal_transport.h"
+#include <algorithm>
+#include <stdexcept>
 
 namespace curvebench {
+namespace {
 
-const std::vector<std::unique_ptr<Algorithm>>& all_algorithms() {
-  static const auto algorithms = [] {
-    std::vector<std::unique_ptr<Algorithm>> list;
-    list.push_back(make_labeling_algorithm());
-    list.push_back(make_crust_algorithm());
-    list.push_back(make_nn_crust_algorithm());
-    list.push_back(make_local_crust_algorithm());
-    list.push_back(make_alpha_shape_algorithm());
-    list.push_back(make_optimal_transport_algorithm());
-    return list;
-  }();
+// Function-local, so that registrations from other translation units' static initialisers
+// find it constructed whatever the order of initialisation.
+std::vector<std::unique_ptr<Algorithm>>& registered() {
+  static std::vector<std::unique_ptr<Algorithm>> algorithms;
   return algorithms;
+}
+
+bool valid_name(const std::string& name) {
+  if (name.empty() || name.front() == '-' || name.back() == '-') return false;
+  return std::all_of(name.begin(), name.end(), [](char c) { return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '-'; });
+}
+
+}  // namespace
+
+bool register_algorithm(std::unique_ptr<Algorithm> algorithm) {
+  const std::string name = algorithm->name();
+  if (!valid_name(name)) throw std::logic_error("algorithm name '" + name + "' is not lower-case words joined by '-'");
+  auto& list = registered();
+  for (const auto& known : list) {
+    if (known->name() == name) throw std::logic_error("two algorithms are named '" + name + "'");
+  }
+  list.push_back(std::move(algorithm));
+  return true;
+}
+
+std::vector<const Algorithm*> all_algorithms() {
+  std::vector<const Algorithm*> list;
+  for (const auto& algorithm : registered()) list.push_back(algorithm.get());
+  std::sort(list.begin(), list.end(), [](const Algorithm* a, const Algorithm* b) { return a->name() < b->name(); });
+  return list;
 }
 
 const Algorithm& find_algorithm(const std::string& name) {
   std::string known;
-  for (const auto& algorithm : all_algorithms()) {
+  for (const Algorithm* algorithm : all_algorithms()) {
     if (algorithm->name() == name) return *algorithm;
     known += (known.empty() ? "" : ", ") + algorithm->name();
   }

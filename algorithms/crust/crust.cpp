@@ -1,37 +1,31 @@
-#include "crust/crust.h"
-
-#include "core/phase_timer.h"
-#include "voronoi/delaunay_voronoi.h"
+// The "crust" algorithm: the Delaunay edges of the sites that survive adding their Voronoi
+// vertices (crust_triangulation.h).
+#include "core/registry.h"
+#include "crust/crust_triangulation.h"
 
 namespace curvebench {
 namespace {
 
 class Crust final : public Algorithm {
  public:
-  std::string name() const override { return "crust"; }
-  std::string description() const override {
-    return "Crust: Delaunay edges of the samples plus their Voronoi vertices that join two samples "
-           "(Amenta, Bern, Eppstein; GMIP 1998)";
+  const AlgorithmInfo& info() const override {
+    static const AlgorithmInfo about{
+        "crust",
+        "Crust: Delaunay edges of the samples plus their Voronoi vertices that join two samples (Amenta, Bern, "
+        "Eppstein; GMIP 1998)",
+        kCurve, {}, SiteInput::kDelaunay};
+    return about;
   }
-  unsigned outputs() const override { return kCurve; }
 
-  Reconstruction reconstruct(std::span<const Point2> points, const Parameters& params) const override {
-    resolve_parameters(parameters(), params, name());
-    PhaseTimer timer;
-    DelaunayVoronoi sites;
-    std::vector<Edge> edges = delaunay_edges_with_voronoi_vertices(points, sites, timer);
-    require_triangulation(sites, name());
-    timer.lap(name());
-    Reconstruction result;
-    result.distinct_points = sites.site_count();
-    result.curve_edges = to_input_indices(sites, std::move(edges));
-    result.timing_ms = timer.finish();
+  SiteResult run(const Sites& sites, const ParameterValues&, PhaseTimer& timer) const override {
+    SiteResult result;
+    result.curve_edges = delaunay_edges_with_voronoi_vertices(*sites.delaunay);
+    timer.lap("crust");
     return result;
   }
 };
 
+CURVEBENCH_REGISTER_ALGORITHM(Crust);
+
 }  // namespace
-
-std::unique_ptr<Algorithm> make_crust_algorithm() { return std::make_unique<Crust>(); }
-
 }  // namespace curvebench

@@ -1,4 +1,5 @@
 #include "labeling/dominant_points.h"
+#include "labeling/side_of_tangent_line.h"
 
 namespace curvebench {
 

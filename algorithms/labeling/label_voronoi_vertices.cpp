@@ -1,4 +1,5 @@
 #include "labeling/label_voronoi_vertices.h"
+#include "labeling/side_of_tangent_line.h"
 
 #include <algorithm>
 #include <numeric>

@@ -1,8 +1,6 @@
-#include "labeling/labeling.h"
-
-#include <algorithm>
-
-#include "core/phase_timer.h"
+// The "labeling" algorithm: incremental Voronoi-vertex labeling (Peethambaran et al. 2019),
+// producing the curve, the interior medial axis and the dominant points from one labeling.
+#include "core/registry.h"
 #include "labeling/extract_shapes.h"
 #include "labeling/label_voronoi_vertices.h"
 
@@ -11,36 +9,29 @@ namespace {
 
 class Labeling final : public Algorithm {
  public:
-  std::string name() const override { return "labeling"; }
-  std::string description() const override {
-    return "Incremental Voronoi-vertex labeling (Peethambaran, Parakkat, Tagliasacchi, Wang, Muthuganapathy; CGF 2019)";
+  const AlgorithmInfo& info() const override {
+    static const AlgorithmInfo about{
+        "labeling",
+        "Incremental Voronoi-vertex labeling (Peethambaran, Parakkat, Tagliasacchi, Wang, Muthuganapathy; CGF 2019)",
+        kCurve | kMedialAxis | kDominantPoints, {}, SiteInput::kDelaunay};
+    return about;
   }
-  unsigned outputs() const override { return kCurve | kMedialAxis | kDominantPoints; }
 
-  Reconstruction reconstruct(std::span<const Point2> points, const Parameters& params) const override {
-    resolve_parameters(parameters(), params, name());
-    PhaseTimer timer;
-    const DelaunayVoronoi dv = build_delaunay_voronoi(points);
-    timer.lap("delaunay");
-    require_triangulation(dv, name());
+  SiteResult run(const Sites& sites, const ParameterValues&, PhaseTimer& timer) const override {
+    const DelaunayVoronoi& dv = *sites.delaunay;
     const VoronoiLabels labels = label_voronoi_vertices(dv);
     timer.lap("labeling");
-    Reconstruction result;
-    result.distinct_points = dv.site_count();
+    SiteResult result;
     auto [curve, dominant] = extract_curve_and_dominant_points(dv, labels);
-    result.curve_edges = to_input_indices(dv, std::move(curve));
-    result.medial_axis = extract_interior_medial_axis(dv, labels);
-    for (int& site : dominant) site = dv.input_of_site[site];
-    std::sort(dominant.begin(), dominant.end());  // in input order, whatever the site numbering
+    result.curve_edges = std::move(curve);
     result.dominant_points = std::move(dominant);
+    result.medial_axis = extract_interior_medial_axis(dv, labels);
     timer.lap("extract");
-    result.timing_ms = timer.finish();
     return result;
   }
 };
 
+CURVEBENCH_REGISTER_ALGORITHM(Labeling);
+
 }  // namespace
-
-std::unique_ptr<Algorithm> make_labeling_algorithm() { return std::make_unique<Labeling>(); }
-
 }  // namespace curvebench

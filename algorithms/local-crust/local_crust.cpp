@@ -1,6 +1,5 @@
-#include "local-crust/local_crust.h"
-
-#include "core/phase_timer.h"
+// The "local-crust" algorithm: the one-step crust and its anti-crust skeleton.
+#include "core/registry.h"
 #include "local-crust/anti_crust_medial_axis.h"
 #include "local-crust/one_step_crust.h"
 
@@ -9,33 +8,28 @@ namespace {
 
 class LocalCrust final : public Algorithm {
  public:
-  std::string name() const override { return "local-crust"; }
-  std::string description() const override {
-    return "Local (one-step) crust and anti-crust: one InCircle test per Delaunay/Voronoi edge pair gives curve "
-           "and skeleton (Gold, SCG 1999; Gold, Snoeyink, Algorithmica 2001)";
+  const AlgorithmInfo& info() const override {
+    static const AlgorithmInfo about{
+        "local-crust",
+        "Local (one-step) crust and anti-crust: one InCircle test per Delaunay/Voronoi edge pair gives curve and "
+        "skeleton (Gold, SCG 1999; Gold, Snoeyink, Algorithmica 2001)",
+        kCurve | kMedialAxis, {}, SiteInput::kDelaunay};
+    return about;
   }
-  unsigned outputs() const override { return kCurve | kMedialAxis; }
 
-  Reconstruction reconstruct(std::span<const Point2> points, const Parameters& params) const override {
-    resolve_parameters(parameters(), params, name());
-    PhaseTimer timer;
-    const DelaunayVoronoi dv = build_delaunay_voronoi(points);
-    timer.lap("delaunay");
-    require_triangulation(dv, name());
+  SiteResult run(const Sites& sites, const ParameterValues&, PhaseTimer& timer) const override {
+    const DelaunayVoronoi& dv = *sites.delaunay;
     OneStepCrust crust = one_step_crust(dv);
     timer.lap("crust");
-    Reconstruction result;
-    result.distinct_points = dv.site_count();
+    SiteResult result;
     result.medial_axis = anti_crust_medial_axis(dv, crust);
-    result.curve_edges = to_input_indices(dv, std::move(crust.curve));
+    result.curve_edges = std::move(crust.curve);
     timer.lap("skeleton");
-    result.timing_ms = timer.finish();
     return result;
   }
 };
 
+CURVEBENCH_REGISTER_ALGORITHM(LocalCrust);
+
 }  // namespace
-
-std::unique_ptr<Algorithm> make_local_crust_algorithm() { return std::make_unique<LocalCrust>(); }
-
 }  // namespace curvebench

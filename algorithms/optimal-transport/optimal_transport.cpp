@@ -1,5 +1,4 @@
-#include "optimal-transport/optimal_transport.h"
-
+// The "optimal-transport" algorithm: CGAL's optimal-transport reconstruction of the sites.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Optimal_transportation_reconstruction_2.h>
 
@@ -10,7 +9,7 @@
 #include <limits>
 #include <thread>
 
-#include "core/phase_timer.h"
+#include "core/registry.h"
 #include "voronoi/delaunay_voronoi.h"
 
 namespace curvebench {
@@ -38,50 +37,39 @@ double mean_nearest_spacing(const DelaunayVoronoi& dv) {
 
 class OptimalTransport final : public Algorithm {
  public:
-  std::string name() const override { return "optimal-transport"; }
-  std::string description() const override {
-    return "CGAL's optimal-transport reconstruction (Optimal_transportation_reconstruction_2; de Goes et al., SGP "
-           "2011); outputs new vertices";
-  }
-  unsigned outputs() const override { return kCurve; }
-  std::vector<ParameterSpec> parameters() const override {
-    return {{"tolerance", kDefaultTolerance,
-             "stop collapsing edges once the Wasserstein transport cost per sample would exceed this many mean "
-             "nearest-neighbour spacings (used when vertices is 0)"},
-            {"vertices", 0.0, "if > 0, collapse until this many vertices remain instead of using tolerance"},
-            {"relocation", 0.0, "vertex relocation steps after each edge collapse (CGAL's default 2 is 2.5 to 6 times slower)"},
-            {"flip", 0.0,
-             "1: flip edges so that every edge can be collapsed (CGAL's default; about 1.5x slower, the same output "
-             "on epsilon-samples), 0: no flips"},
-            {"max_points", kDefaultMaxPoints,
-             "refuse more distinct points than this (0: no limit): the edge-collapse simulation takes about 4 s at "
-             "10^4 points and grows faster than linearly"}};
+  const AlgorithmInfo& info() const override {
+    static const AlgorithmInfo about{
+        "optimal-transport",
+        "CGAL's optimal-transport reconstruction (Optimal_transportation_reconstruction_2; de Goes et al., SGP 2011); "
+        "outputs new vertices",
+        kNewCurve,
+        {real_parameter("tolerance", 2.0, 0.0, std::numeric_limits<double>::max(),
+                        "stop collapsing edges once the Wasserstein transport cost per sample would exceed this many "
+                        "mean nearest-neighbour spacings (used when vertices is 0)",
+                        /*minimum_exclusive=*/true),
+         integer_parameter("vertices", 0, 0, 1000000000,
+                           "if > 0, collapse until this many vertices remain instead of using tolerance"),
+         integer_parameter("relocation", 0, 0, 100,
+                           "vertex relocation steps after each edge collapse (CGAL's default 2 is 2.5 to 6 times slower)"),
+         boolean_parameter("flip", false,
+                           "flip edges so that every edge can be collapsed (CGAL's default; slower, the same output on "
+                           "epsilon-samples)"),
+         integer_parameter("max_points", 20000, 0, 1000000000,
+                           "refuse more distinct points than this (0: no limit): the edge-collapse simulation grows "
+                           "faster than linearly")},
+        SiteInput::kDelaunay};
+    return about;
   }
 
-  Reconstruction reconstruct(std::span<const Point2> points, const Parameters& given) const override {
-    const Parameters params = resolve_parameters(parameters(), given, name());
-    const double tolerance = params.at("tolerance"), vertices = params.at("vertices");
-    const double relocation = params.at("relocation"), flip = params.at("flip");
-    if (!(tolerance > 0.0) || !std::isfinite(tolerance)) {
-      throw InputError("optimal-transport: tolerance must be a number > 0");
-    }
-    auto whole = [](double v) { return v >= 0.0 && v <= 1e9 && v == std::floor(v); };
-    if (!whole(vertices)) throw InputError("optimal-transport: vertices must be a whole number >= 0");
-    if (!whole(relocation) || relocation > 100) {
-      throw InputError("optimal-transport: relocation must be a whole number from 0 to 100");
-    }
-    if (flip != 0.0 && flip != 1.0) throw InputError("optimal-transport: flip must be 0 or 1");
-    const double max_points = params.at("max_points");
-    if (!whole(max_points)) throw InputError("optimal-transport: max_points must be a whole number >= 0");
-    PhaseTimer timer;
-    // The shared layer removes duplicates (each distinct point carries mass 1) and rejects
-    // input without a closed curve, with the same messages as every other algorithm.
-    const DelaunayVoronoi dv = build_delaunay_voronoi(points);
-    timer.lap("delaunay");
-    require_triangulation(dv, name());
+  SiteResult run(const Sites& input, const ParameterValues& params, PhaseTimer& timer) const override {
+    const double tolerance = params.real("tolerance");
+    const auto vertices = params.integer("vertices"), relocation = params.integer("relocation");
+    const bool flip = params.boolean("flip");
+    const auto max_points = params.integer("max_points");
+    const DelaunayVoronoi& dv = *input.delaunay;
     if (max_points > 0 && dv.site_count() > max_points) {
       throw InputError("optimal-transport: " + std::to_string(dv.site_count()) + " distinct points exceed max_points=" +
-                       std::to_string(static_cast<long>(max_points)) + " (raise it with --param max_points=N, 0 for no limit)");
+                       std::to_string(max_points) + " (raise it with --param max_points=N, 0 for no limit)");
     }
 
     std::vector<Kernel::Point_2> sites;
@@ -100,7 +88,7 @@ class OptimalTransport final : public Algorithm {
       try {
         Otr otr(sites);
         otr.set_relocation(static_cast<unsigned>(relocation));
-        otr.set_use_flip(flip == 1.0);
+        otr.set_use_flip(flip);
         if (vertices > 0) {
           otr.run_until(static_cast<std::size_t>(vertices));
         } else {
@@ -136,22 +124,14 @@ class OptimalTransport final : public Algorithm {
     std::sort(edges.begin(), edges.end());
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
 
-    Reconstruction result;
-    result.distinct_points = dv.site_count();
-    result.curve_vertices = std::move(out);
-    result.curve_edges = std::move(edges);
+    SiteResult result;
+    result.new_curve = PolylineGraph{std::move(out), std::move(edges)};
     timer.lap("extract");
-    result.timing_ms = timer.finish();
     return result;
   }
-
- private:
-  static constexpr double kDefaultTolerance = 2.0;
-  static constexpr double kDefaultMaxPoints = 20000;
 };
 
+CURVEBENCH_REGISTER_ALGORITHM(OptimalTransport);
+
 }  // namespace
-
-std::unique_ptr<Algorithm> make_optimal_transport_algorithm() { return std::make_unique<OptimalTransport>(); }
-
 }  // namespace curvebench

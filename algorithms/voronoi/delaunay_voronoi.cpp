@@ -14,11 +14,37 @@
 #include <numeric>
 #include <utility>
 
-#include "core/algorithm.h"
 #include "voronoi/cgal_kernel.h"
 
 namespace curvebench {
+
+namespace cgal {
+
+// What Delaunay_triangulation_2::insert does with a range of (point, index) pairs, without
+// its indirection: CGAL sorts an array of indices into spatial order (randomized rounds, each
+// along a Hilbert curve) comparing the points they index; here the pairs themselves are
+// sorted, then each is inserted from the face of the one before. The result is the same
+// triangulation, built 10-20% faster at 10^5-10^6 points because the sort reads contiguous
+// memory. Inserting a point equal to an earlier one returns the earlier vertex, whose index is
+// then replaced unless the new one is negative.
+void insert_in_spatial_order(Delaunay& dt, IndexedPoints& indexed) {
+  using Traits = CGAL::Spatial_sort_traits_adapter_2<Kernel, CGAL::First_of_pair_property_map<IndexedPoints::value_type>>;
+  CGAL::spatial_sort(indexed.begin(), indexed.end(), Traits());
+  Delaunay::Face_handle hint;
+  for (const auto& [point, index] : indexed) {
+    const auto before = dt.number_of_vertices();
+    const auto v = dt.insert(point, hint);
+    if (index >= 0 || dt.number_of_vertices() > before) v->info() = index;
+    hint = v->face();
+  }
+}
+
+}  // namespace cgal
+
 namespace {
+
+using cgal::IndexedPoints;
+using cgal::insert_in_spatial_order;
 
 // Sites are the distinct input points in order of first occurrence. Only called when the
 // triangulation reports fewer vertices than input points, so the common case pays nothing.
@@ -99,8 +125,6 @@ void circumcircle(Point2 a, Point2 b, Point2 c, Point2& center, double& radius, 
   error = 4.0 * std::numeric_limits<double>::epsilon() * (std::abs(center.x) + std::abs(center.y));
 }
 
-using IndexedPoints = std::vector<std::pair<cgal::Point, int>>;
-
 IndexedPoints indexed_points(std::span<const Point2> points) {
   IndexedPoints indexed;
   indexed.reserve(points.size());
@@ -108,24 +132,6 @@ IndexedPoints indexed_points(std::span<const Point2> points) {
   return indexed;
 }
 
-// What Delaunay_triangulation_2::insert does with a range of (point, index) pairs, without
-// its indirection: CGAL sorts an array of indices into spatial order (randomized rounds, each
-// along a Hilbert curve) comparing the points they index; here the pairs themselves are
-// sorted, then each is inserted from the face of the one before. The result is the same
-// triangulation, built 10-20% faster at 10^5-10^6 points because the sort reads contiguous
-// memory. Inserting a point equal to an earlier one returns the earlier vertex, whose index is
-// then replaced unless the new one is negative.
-void insert_in_spatial_order(cgal::Delaunay& dt, IndexedPoints& indexed) {
-  using Traits = CGAL::Spatial_sort_traits_adapter_2<cgal::Kernel, CGAL::First_of_pair_property_map<IndexedPoints::value_type>>;
-  CGAL::spatial_sort(indexed.begin(), indexed.end(), Traits());
-  cgal::Delaunay::Face_handle hint;
-  for (const auto& [point, index] : indexed) {
-    const auto before = dt.number_of_vertices();
-    const auto v = dt.insert(point, hint);
-    if (index >= 0 || dt.number_of_vertices() > before) v->info() = index;
-    hint = v->face();
-  }
-}
 
 // Triangulates the points into `dt` and fills the site fields of `dv` (sites, input_of_site,
 // site_of_input, dimension); each vertex's info becomes its site index.
@@ -276,45 +282,6 @@ int bare_delaunay_vertex_count(std::span<const Point2> points) {
   return static_cast<int>(dt.number_of_vertices());
 }
 
-std::vector<Edge> delaunay_edges_with_voronoi_vertices(std::span<const Point2> points, DelaunayVoronoi& sites,
-                                                      PhaseTimer& timer) {
-  IndexedPoints indexed;  // sites, then Voronoi vertices (index -1)
-  {
-    cgal::Delaunay dt;
-    triangulate_sites(points, dt, sites);
-    timer.lap("delaunay");
-    if (sites.dimension < 2) return {};
-    indexed.reserve(sites.sites.size() + dt.number_of_faces());
-    for (int i = 0; i < sites.site_count(); ++i) indexed.emplace_back(cgal::Point(sites.sites[i].x, sites.sites[i].y), i);
-    for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-      Point2 corners[3], center;
-      for (int i = 0; i < 3; ++i) corners[i] = {f->vertex(i)->point().x(), f->vertex(i)->point().y()};
-      double radius, error;
-      circumcircle(corners[0], corners[1], corners[2], center, radius, error);
-      if (std::isfinite(center.x) && std::isfinite(center.y)) indexed.emplace_back(cgal::Point(center.x, center.y), -1);
-    }
-  }
-  // Triangulating the union afresh, in CGAL's randomized spatial order, is several times
-  // faster than inserting the Voronoi vertices into the sites' triangulation: they lie along
-  // the medial axes, inside the circumcircles of many long triangles at once.
-  cgal::Delaunay dt;
-  insert_in_spatial_order(dt, indexed);  // sites are distinct: a site's vertex keeps its index
-  indexed = {};
-  // Each edge once, from the face at the lower address; the infinite vertex has no index.
-  const auto infinite = dt.infinite_vertex();
-  const std::less<const void*> lower_address;
-  std::vector<Edge> edges;
-  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) {
-    int index[3];
-    for (int i = 0; i < 3; ++i) index[i] = f->vertex(i) == infinite ? -1 : f->vertex(i)->info();
-    for (int i = 0; i < 3; ++i) {
-      const int a = index[(i + 1) % 3], b = index[(i + 2) % 3];
-      if (a >= 0 && b >= 0 && lower_address(&*f, &*f->neighbor(i))) edges.push_back(make_edge(a, b));
-    }
-  }
-  return edges;
-}
-
 DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points) {
   DelaunayVoronoi dv;
   cgal::Delaunay dt;
@@ -377,20 +344,6 @@ DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points) {
   return dv;
 }
 
-void require_triangulation(const DelaunayVoronoi& dv, const std::string& algorithm) {
-  if (dv.dimension == 2) return;
-  const std::string count = std::to_string(dv.site_count());
-  if (dv.site_count() < 3) {
-    throw InputError(algorithm + " needs at least 3 distinct points, the input has " + count);
-  }
-  throw InputError(algorithm + ": all " + count + " distinct points are collinear, so they bound no closed curve");
-}
-
-std::vector<Edge> to_input_indices(const DelaunayVoronoi& dv, std::vector<Edge> site_edges) {
-  for (auto& e : site_edges) e = make_edge(dv.input_of_site[e[0]], dv.input_of_site[e[1]]);
-  return site_edges;
-}
-
 bool is_degenerate_voronoi_edge(const DelaunayVoronoi& dv, int triangle, int corner) {
   const int other = dv.neighbors[triangle][corner];
   if (other == kInfinite) return false;
@@ -401,25 +354,6 @@ bool is_degenerate_voronoi_edge(const DelaunayVoronoi& dv, int triangle, int cor
                        : (opp[1] != tri[(corner + 1) % 3] && opp[1] != tri[(corner + 2) % 3] ? opp[1] : opp[2]);
   auto P = [&](int s) { return cgal::Point(dv.sites[s].x, dv.sites[s].y); };
   return CGAL::side_of_oriented_circle(P(tri[0]), P(tri[1]), P(tri[2]), P(apex)) == CGAL::ON_ORIENTED_BOUNDARY;
-}
-
-int exact_side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source, int query) {
-  using Q = CGAL::Exact_rational;
-  const Point2 p = dv.sites[site];
-  auto offset = [&](int triangle, Q& x, Q& y) {  // circumcenter(triangle) - p, exactly
-    const auto& tri = dv.triangles[triangle];
-    const Q ax(dv.sites[tri[0]].x), ay(dv.sites[tri[0]].y);
-    const Q bx = Q(dv.sites[tri[1]].x) - ax, by = Q(dv.sites[tri[1]].y) - ay;
-    const Q cx = Q(dv.sites[tri[2]].x) - ax, cy = Q(dv.sites[tri[2]].y) - ay;
-    const Q d = 2 * (bx * cy - by * cx);
-    const Q b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
-    x = ax + (cy * b2 - by * c2) / d - Q(p.x);
-    y = ay + (bx * c2 - cx * b2) / d - Q(p.y);
-  };
-  Q sx, sy, qx, qy;
-  offset(source, sx, sy);
-  offset(query, qx, qy);
-  return CGAL::sign(sx * qx + sy * qy);
 }
 
 bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q, int& wedge) {

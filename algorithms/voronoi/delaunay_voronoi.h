@@ -29,7 +29,6 @@
 #include <string>
 #include <vector>
 
-#include "core/phase_timer.h"
 #include "core/point.h"
 
 namespace curvebench {
@@ -48,7 +47,7 @@ struct DelaunayVoronoi {
   std::vector<std::array<int, 3>> neighbors;  // triangle across the edge opposite each corner
   std::vector<Point2> circumcenters;          // the Voronoi vertex of each triangle
   std::vector<double> circumradii;
-  // Bound on the rounding error of each computed circumcenter (see side_of_tangent_line).
+  // Bound on the rounding error of each computed circumcenter (see labeling/side_of_tangent_line.h).
   std::vector<double> circumcenter_errors;
 
   // One triangle incident to each site. For a hull site it is the first triangle of its fan
@@ -69,51 +68,9 @@ DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points);
 // sorting the pairs themselves instead of indices to them (see insert_in_spatial_order).
 int bare_delaunay_vertex_count(std::span<const Point2> points);
 
-// The crust's triangulation (Amenta, Bern, Eppstein 1998): the Delaunay edges between two
-// sites in the triangulation of the sites together with all their Voronoi vertices, as site
-// pairs, each once, in no particular order. `sites` receives the site fields of
-// build_delaunay_voronoi (sites, input_of_site, site_of_input, dimension), sites always in
-// order of first occurrence, and nothing else; below dimension 2 there are no edges. No
-// triangle arrays are built: the Voronoi vertices are read straight off the sites' CGAL
-// triangulation. A Voronoi vertex equal to a site counts as that site; one whose computed
-// position is not finite (a hull triangle flat to rounding, its centre beyond the range of
-// doubles) is left out: its only effect would be on hull edges. `timer` laps "delaunay"
-// once the sites are triangulated.
-std::vector<Edge> delaunay_edges_with_voronoi_vertices(std::span<const Point2> points, DelaunayVoronoi& sites,
-                                                      PhaseTimer& timer);
-
-// Throws InputError, naming `algorithm`, unless the sites span the plane (three or more
-// distinct points, not all collinear): only then is there a closed curve to look for.
-void require_triangulation(const DelaunayVoronoi& dv, const std::string& algorithm);
-
-// Edges between sites as edges between input indices (first occurrences), in the same order.
-std::vector<Edge> to_input_indices(const DelaunayVoronoi& dv, std::vector<Edge> site_edges);
-
 // True if the Voronoi edge dual to the Delaunay edge opposite `corner` of `triangle` has
 // zero length: the four sites of the two triangles are exactly co-circular. False for hull edges.
 bool is_degenerate_voronoi_edge(const DelaunayVoronoi& dv, int triangle, int corner);
-
-// The sign of dot(circumcenter(query) - p, circumcenter(source) - p) in exact rational
-// arithmetic, p = sites[site]: side_of_tangent_line's fallback.
-int exact_side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source_triangle, int query_triangle);
-
-// Exact sign of dot(circumcenter(query) - p, circumcenter(source) - p) with p = sites[site]:
-// +1 if the two Voronoi vertices lie on the same side of the line through p orthogonal to
-// (circumcenter(source) - p), -1 on opposite sides, 0 if the query lies on that line.
-// Evaluated in double precision with an exact rational fallback near zero. Inline: the
-// labeling walk calls it once or more per Voronoi vertex, and inlined, its loads start
-// while the caller's are still in flight (5-7% of the labeling at 10^6 points).
-inline int side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source_triangle, int query_triangle) {
-  const Point2 p = dv.sites[site];
-  const double value = dot(dv.circumcenters[query_triangle] - p, dv.circumcenters[source_triangle] - p);
-  // p lies on both circumcircles, so the two vectors have the circumradii as lengths.
-  const double rounding = 4.0 * std::numeric_limits<double>::epsilon() * (std::abs(p.x) + std::abs(p.y));
-  const double eu = dv.circumcenter_errors[query_triangle] + rounding;
-  const double ev = dv.circumcenter_errors[source_triangle] + rounding;
-  const double bound = eu * dv.circumradii[source_triangle] + ev * dv.circumradii[query_triangle] + eu * ev;
-  if (std::abs(value) > bound && std::isfinite(bound)) [[likely]] return value > 0 ? 1 : -1;
-  return exact_side_of_tangent_line(dv, site, source_triangle, query_triangle);
-}
 
 // True if `q` lies inside or on the boundary of the convex hull of the sites (dimension 2).
 // `wedge` (any value at first) keeps the hull position where the last query was decided,

@@ -41,8 +41,8 @@ std::vector<Family> families() {
 
 bool exact(const Algorithm& algorithm, const SampledScene& samples) {
   try {
-    auto result = algorithm.reconstruct(samples.points, resolve_parameters(algorithm.parameters(), {}, algorithm.name()));
-    if (!result.curve_edges || result.curve_vertices) return false;
+    auto result = algorithm.reconstruct(samples.points, {});
+    if (!result.curve_edges) return false;
     auto edges = *result.curve_edges;
     auto truth = samples.true_edges;
     std::sort(edges.begin(), edges.end());
@@ -65,8 +65,8 @@ int main(int argc, char** argv) {
   const auto all = families();
 
   std::vector<const Algorithm*> algorithms;
-  for (const auto& a : all_algorithms()) {
-    if (a->outputs() & kCurve) algorithms.push_back(a.get());
+  for (const Algorithm* a : all_algorithms()) {
+    if (a->info().outputs & kCurve) algorithms.push_back(a);
   }
   // exact_share[algorithm][family][epsilon]
   std::vector<std::vector<std::vector<double>>> share(algorithms.size(),

@@ -153,7 +153,7 @@ void reconstruct_once(const std::string& algorithm, std::span<const Point2> poin
     return;
   }
   const Algorithm& chosen = find_algorithm(algorithm);
-  auto result = chosen.reconstruct(points, resolve_parameters(chosen.parameters(), {}, chosen.name()));
+  auto result = chosen.reconstruct(points, {});
   benchmark::DoNotOptimize(result);
 }
 
@@ -291,13 +291,12 @@ void BM_Delaunay(benchmark::State& state, std::string input) {
 }
 
 void BM_Algorithm(benchmark::State& state, const Algorithm* algorithm, std::string input) {
-  const Parameters params = resolve_parameters(algorithm->parameters(), {}, algorithm->name());
   double after_delaunay_share_sum = 0.0;
   int phased_iterations = 0;
   std::optional<double> mean;
   try {
     mean = time_run(state, algorithm->name(), input, [&](const std::vector<Point2>& points) {
-      auto result = algorithm->reconstruct(points, params);
+      auto result = algorithm->reconstruct(points, {});
       benchmark::DoNotOptimize(result);
       const auto& phases = result.timing_ms;
       if (phases.size() >= 2 && phases.front().first == "delaunay" && phases.back().second > 0) {
@@ -346,10 +345,10 @@ int main(int argc, char** argv) {
   for (const auto& input : kInputs) {
     apply_sizes(benchmark::RegisterBenchmark(("delaunay/" + input).c_str(), BM_Delaunay, input));
   }
-  for (const auto& algorithm : all_algorithms()) {
+  for (const Algorithm* algorithm : all_algorithms()) {
     for (const auto& input : kInputs) {
       apply_sizes(benchmark::RegisterBenchmark((algorithm->name() + "/" + input).c_str(), BM_Algorithm,
-                                               algorithm.get(), input));
+                                               algorithm, input));
     }
   }
   benchmark::Initialize(&argc, argv);

@@ -2,21 +2,28 @@
 
 #include "cli/commands.h"
 #include "core/registry.h"
+#include "io/parameters_json.h"
 
 namespace curvebench {
 
 void add_list_command(CLI::App& app) {
   auto* list = app.add_subcommand("list", "Name every algorithm, what it produces and its parameters");
-  list->callback([] {
-    for (const auto& algorithm : all_algorithms()) {
+  auto json = std::make_shared<bool>(false);
+  list->add_flag("--json", *json, "Print the machine-readable catalogue (names, citations, outputs, typed parameters)");
+  list->callback([json] {
+    const auto algorithms = all_algorithms();
+    if (*json) {
+      std::cout << algorithm_catalogue(algorithms).dump(2) << "\n";
+      return;
+    }
+    for (const Algorithm* algorithm : algorithms) {
+      const AlgorithmInfo& info = algorithm->info();
       std::string produces;
-      const unsigned outputs = algorithm->outputs();
-      if (outputs & kCurve) produces += "curve";
-      if (outputs & kMedialAxis) produces += std::string(produces.empty() ? "" : ", ") + "medial axis";
-      if (outputs & kDominantPoints) produces += std::string(produces.empty() ? "" : ", ") + "dominant points";
-      std::cout << algorithm->name() << "\n  " << algorithm->description() << "\n  produces: " << produces << "\n";
-      for (const auto& p : algorithm->parameters()) {
-        std::cout << "  --param " << p.name << "=" << p.default_value << "  " << p.description << "\n";
+      for (const auto& output : output_names(info.outputs)) produces += (produces.empty() ? "" : ", ") + output;
+      std::cout << info.name << "\n  " << info.citation << "\n  produces: " << produces << "\n";
+      for (const auto& p : info.parameters) {
+        std::cout << "  --param " << p.name << "=" << value_text(p.default_value) << "  (" << type_name(p.type) << ": "
+                  << allowed_values(p) << ") " << p.description << "\n";
       }
     }
   });

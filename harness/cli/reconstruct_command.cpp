@@ -1,6 +1,5 @@
-#include <cerrno>
-#include <cmath>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <stdexcept>
 
@@ -21,19 +20,13 @@ struct ReconstructOptions {
   std::vector<std::string> params;
 };
 
-Parameters parse_parameters(const std::vector<std::string>& assignments) {
-  Parameters params;
+// name=value assignments; each value is converted to its parameter's type when resolved.
+std::map<std::string, ParameterValue> parse_parameters(const std::vector<std::string>& assignments) {
+  std::map<std::string, ParameterValue> params;
   for (const auto& assignment : assignments) {
     const size_t eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0) throw std::runtime_error("--param '" + assignment + "' is not name=value");
-    const std::string value = assignment.substr(eq + 1);
-    char* end = nullptr;
-    errno = 0;
-    const double number = std::strtod(value.c_str(), &end);
-    if (value.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(number)) {
-      throw std::runtime_error("--param '" + assignment + "': '" + value + "' is not a finite number");
-    }
-    params[assignment.substr(0, eq)] = number;
+    params[assignment.substr(0, eq)] = assignment.substr(eq + 1);
   }
   return params;
 }
@@ -41,12 +34,12 @@ Parameters parse_parameters(const std::vector<std::string>& assignments) {
 void run(const ReconstructOptions& options) {
   try {
     const Algorithm& algorithm = find_algorithm(options.algorithm);
-    const Parameters given = parse_parameters(options.params);
-    const Parameters resolved = resolve_parameters(algorithm.parameters(), given, algorithm.name());
+    const auto given = parse_parameters(options.params);
+    const ParameterValues resolved = resolve_parameters(algorithm.name(), algorithm.info().parameters, given);
     const std::vector<Point2> points = read_points_file(options.input);
     Reconstruction result;
     try {
-      result = algorithm.reconstruct(points, resolved);
+      result = algorithm.reconstruct(points, given);
     } catch (const InputError& e) {
       throw std::runtime_error(options.input + ": " + e.what());
     }

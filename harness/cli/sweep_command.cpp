@@ -96,12 +96,6 @@ void exec_sweep_run(const std::string& spec) {
   ::execv("/proc/self/exe", const_cast<char* const*>(argv));
 }
 
-std::vector<const Algorithm*> registered_algorithms() {
-  std::vector<const Algorithm*> algorithms;
-  for (const auto& algorithm : all_algorithms()) algorithms.push_back(algorithm.get());
-  return algorithms;
-}
-
 void parse_shard(const std::string& text, SweepOptions& options) {
   const size_t slash = text.find('/');
   try {
@@ -125,7 +119,7 @@ void run(const SweepCommandOptions& o) {
     throw std::runtime_error(o.config + ": not JSON: " + e.what());
   }
   SweepEnvironment environment;
-  environment.algorithms = registered_algorithms();
+  environment.algorithms = all_algorithms();
   environment.generate_input = generate_with_this_executable;
   environment.start_fresh_process = exec_sweep_run;
   SweepPlan plan;
@@ -171,7 +165,7 @@ void add_sweep_command(CLI::App& app) {
   auto spec = std::make_shared<std::string>();
   auto* one = app.add_subcommand("sweep-run", "One run of a sweep (started by sweep)")->group("");
   one->add_option("spec", *spec, "The run, as JSON")->required();
-  one->callback([spec] { report_child_result([&] { return perform_sweep_run(*spec, registered_algorithms()); }); });
+  one->callback([spec] { report_child_result([&] { return perform_sweep_run(*spec, all_algorithms()); }); });
 }
 
 }  // namespace curvebench

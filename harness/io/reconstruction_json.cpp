@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "io/parameters_json.h"
+
 namespace curvebench {
 namespace {
 
@@ -19,17 +21,19 @@ nlohmann::ordered_json points_json(const std::vector<Point2>& points) {
 
 }  // namespace
 
-nlohmann::ordered_json reconstruction_to_json(const std::string& algorithm, const Parameters& parameters,
+nlohmann::ordered_json reconstruction_to_json(const std::string& algorithm, const ParameterValues& parameters,
                                               const ReconstructionInput& input, const Reconstruction& result) {
   nlohmann::ordered_json json;
   json["algorithm"] = algorithm;
-  json["parameters"] = nlohmann::ordered_json::object();
-  for (const auto& [name, value] : parameters) json["parameters"][name] = value;
+  json["parameters"] = parameters_to_json(parameters);
   json["input"] = {{"path", input.path}, {"points", input.points}, {"distinct_points", result.distinct_points}};
+  // "curve" holds edges between input points, with "positions" (one per input point) for a
+  // denoising method; or, for a method with vertices of its own, "vertices" and edges between them.
   if (result.curve_edges) {
-    json["curve"] = nlohmann::ordered_json::object();
-    if (result.curve_vertices) json["curve"]["vertices"] = points_json(*result.curve_vertices);
-    json["curve"]["edges"] = edges_json(*result.curve_edges);
+    json["curve"] = {{"edges", edges_json(*result.curve_edges)}};
+    if (result.moved_points) json["curve"]["positions"] = points_json(*result.moved_points);
+  } else if (result.new_curve) {
+    json["curve"] = {{"vertices", points_json(result.new_curve->vertices)}, {"edges", edges_json(result.new_curve->edges)}};
   }
   if (result.medial_axis) {
     json["medial_axis"] = {{"vertices", points_json(result.medial_axis->vertices)},
@@ -71,8 +75,13 @@ Reconstruction reconstruction_from_json(const nlohmann::json& json, const std::s
       return points;
     };
     if (json.contains("curve")) {
-      result.curve_edges = read_edges(json["curve"].at("edges"));
-      if (json["curve"].contains("vertices")) result.curve_vertices = read_points(json["curve"]["vertices"]);
+      const auto& curve = json["curve"];
+      if (curve.contains("vertices")) {
+        result.new_curve = PolylineGraph{read_points(curve["vertices"]), read_edges(curve.at("edges"))};
+      } else {
+        result.curve_edges = read_edges(curve.at("edges"));
+        if (curve.contains("positions")) result.moved_points = read_points(curve["positions"]);
+      }
     }
     if (json.contains("medial_axis")) {
       const auto& axis = json["medial_axis"];

@@ -14,7 +14,7 @@ struct ReconstructionInput {
   int points = 0;
 };
 
-nlohmann::ordered_json reconstruction_to_json(const std::string& algorithm, const Parameters& parameters,
+nlohmann::ordered_json reconstruction_to_json(const std::string& algorithm, const ParameterValues& parameters,
                                               const ReconstructionInput& input, const Reconstruction& result);
 
 // The record written instead when reconstruction failed.

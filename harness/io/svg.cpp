@@ -36,13 +36,14 @@ std::string reconstruction_svg(std::span<const Point2> points, const Reconstruct
     min_y = std::min(min_y, p.y), max_y = std::max(max_y, p.y);
   };
   for (const auto& p : points) extend(p);
-  if (result.curve_vertices) for (const auto& p : *result.curve_vertices) extend(p);
-  if (points.empty() && !result.curve_vertices) min_x = min_y = 0, max_x = max_y = 1;
+  const auto curve = curve_view(result, points);
+  if (curve) for (const auto& p : curve->vertices) extend(p);
+  if (points.empty() && !(curve && !curve->vertices.empty())) min_x = min_y = 0, max_x = max_y = 1;
   const double size = std::max({max_x - min_x, max_y - min_y, 1e-300});
   const double margin = 0.05 * size;
   const double canvas = 800.0;
   const double scale = canvas / (size + 2 * margin);
-  const int legend_rows = 1 + (result.curve_edges ? 1 : 0) + (result.medial_axis ? 1 : 0) + (result.dominant_points ? 1 : 0);
+  const int legend_rows = 1 + (curve ? 1 : 0) + (result.medial_axis ? 1 : 0) + (result.dominant_points ? 1 : 0);
   const double legend_height = 16.0 * legend_rows + 8.0;  // a band above the drawing
   const double width = (max_x - min_x + 2 * margin) * scale;
   const double height = (max_y - min_y + 2 * margin) * scale + legend_height;
@@ -54,7 +55,7 @@ std::string reconstruction_svg(std::span<const Point2> points, const Reconstruct
   append(svg, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%.0f\" height=\"%.0f\" viewBox=\"0 0 %.2f %.2f\">\n",
          width, height, width, height);
   svg += "<title>" + escape_xml(title) + "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
-  auto polyline_group = [&](const std::vector<Edge>& edges, std::span<const Point2> vertices, const char* colour,
+  auto polyline_group = [&](std::span<const Edge> edges, std::span<const Point2> vertices, const char* colour,
                             double stroke) {
     append(svg, "<g stroke=\"%s\" stroke-width=\"%.1f\" stroke-linecap=\"round\">\n", colour, stroke);
     for (const auto& e : edges) {
@@ -64,10 +65,7 @@ std::string reconstruction_svg(std::span<const Point2> points, const Reconstruct
     svg += "</g>\n";
   };
   if (result.medial_axis) polyline_group(result.medial_axis->edges, result.medial_axis->vertices, "#1f77b4", 1.0);
-  if (result.curve_edges) {
-    polyline_group(*result.curve_edges, result.curve_vertices ? std::span<const Point2>(*result.curve_vertices) : points,
-                   "black", 1.5);
-  }
+  if (curve) polyline_group(curve->edges, curve->vertices, "black", 1.5);
   svg += "<g fill=\"#777\">\n";
   for (const auto& p : points) append(svg, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"%.2f\"/>\n", X(p), Y(p), point_radius);
   svg += "</g>\n";
@@ -86,7 +84,7 @@ std::string reconstruction_svg(std::span<const Point2> points, const Reconstruct
     legend_y += 16;
   };
   legend("<circle cx=\"8\" cy=\"0\" r=\"2.5\" fill=\"#777\"/>", "input points");
-  if (result.curve_edges) legend("<line x1=\"0\" y1=\"0\" x2=\"16\" y2=\"0\" stroke=\"black\" stroke-width=\"1.5\"/>", "curve");
+  if (curve) legend("<line x1=\"0\" y1=\"0\" x2=\"16\" y2=\"0\" stroke=\"black\" stroke-width=\"1.5\"/>", "curve");
   if (result.medial_axis) legend("<line x1=\"0\" y1=\"0\" x2=\"16\" y2=\"0\" stroke=\"#1f77b4\"/>", "interior medial axis");
   if (result.dominant_points) legend("<circle cx=\"8\" cy=\"0\" r=\"5\" fill=\"none\" stroke=\"#d62728\" stroke-width=\"2\"/>", "dominant points");
   svg += "</svg>\n";

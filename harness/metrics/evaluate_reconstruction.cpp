@@ -54,16 +54,14 @@ ReconstructionMetrics evaluate_reconstruction(const GroundTruth& truth, std::spa
   ReconstructionMetrics metrics;
   metrics.true_curves = static_cast<int>(truth.curves.size());
 
-  if (reconstruction.curve_edges) {
-    const std::vector<Edge>& edges = *reconstruction.curve_edges;
-    const bool interpolating = !reconstruction.curve_vertices;
-    const std::vector<Segment2> curve =
-        edge_segments(interpolating ? points : std::span<const Point2>(*reconstruction.curve_vertices), edges);
+  if (const auto view = curve_view(reconstruction, points)) {
+    const std::vector<Edge> edges(view->edges.begin(), view->edges.end());
+    const std::vector<Segment2> curve = edge_segments(view->vertices, edges);
     require_finite(curve, "the reconstructed curve");
     metrics.l2_error = l2_error(true_curves, curve);
     metrics.hausdorff = hausdorff_distance(true_curves, curve, hausdorff_tolerance) / diagonal;
     metrics.topology = curve_topology(edges);
-    if (interpolating) metrics.edges = edge_agreement(edges, truth.edges);
+    if (view->on_input_points) metrics.edges = edge_agreement(edges, truth.edges);
   }
 
   if (reconstruction.medial_axis) {

@@ -10,7 +10,7 @@ CURVEBENCH_BUILD_DIR="${CURVEBENCH_BUILD_DIR:-$CURVEBENCH_ROOT/build}"
 CURVEBENCH_VENV="$CURVEBENCH_ROOT/.venv"
 
 curvebench_debian_packages=(g++ cmake ninja-build libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libbenchmark-dev nlohmann-json3-dev libcli11-dev googletest libgtest-dev)
+  libbenchmark-dev nlohmann-json3-dev libcli11-dev googletest libgtest-dev libnanoflann-dev libeigen3-dev)
 
 curvebench_install_debian_packages() {
   local missing=()

@@ -15,6 +15,7 @@
 
 #include "io/ground_truth_json.h"
 #include "io/metrics_json.h"
+#include "io/parameters_json.h"
 #include "io/points_file.h"
 #include "metrics/evaluate_reconstruction.h"
 #include "metrics/oracle_l2_error.h"
@@ -171,11 +172,9 @@ std::string perform_run(Json row, const Json& run_parameters, const std::string&
                         const Algorithm& algorithm) {
   const std::vector<Point2> points = read_points_file(points_path);
   const GroundTruth truth = read_ground_truth_file(truth_path);
-  Parameters parameters;
-  for (const auto& [name, value] : run_parameters.items()) parameters[name] = value.get<double>();
   Reconstruction result;
   try {
-    result = algorithm.reconstruct(points, parameters);
+    result = algorithm.reconstruct(points, parameters_from_json(run_parameters, algorithm.name() + ".parameters"));
   } catch (const std::exception& e) {
     row["status"] = "error";
     row["message"] = e.what();

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "io/parameters_json.h"
+
 namespace curvebench {
 namespace {
 
@@ -66,20 +68,13 @@ std::vector<std::pair<std::string, Json>> algorithm_settings(const Json& config,
     const Algorithm& algorithm = algorithm_named(algorithms, object.at("name").get<std::string>());
     const Json grid = object.contains("parameters") ? object.at("parameters") : Json::object();
     for (const Json& given : expand_grid(grid, algorithm.name() + ".parameters")) {
-      Parameters values;
-      for (const auto& [name, value] : given.items()) {
-        if (!value.is_number()) fail(algorithm.name() + " parameter '" + name + "' must be a number");
-        values[name] = value.get<double>();
-      }
-      Parameters resolved;
       try {
-        resolved = resolve_parameters(algorithm.parameters(), values, algorithm.name());
-      } catch (const InputError& e) {
+        const auto values = parameters_from_json(given, algorithm.name() + ".parameters");
+        const ParameterValues resolved = resolve_parameters(algorithm.name(), algorithm.info().parameters, values);
+        settings.emplace_back(algorithm.name(), parameters_to_json(resolved));
+      } catch (const std::runtime_error& e) {
         fail(e.what());
       }
-      Json parameters = Json::object();
-      for (const auto& [name, value] : resolved) parameters[name] = value;
-      settings.emplace_back(algorithm.name(), std::move(parameters));
     }
   }
   return settings;

@@ -15,7 +15,7 @@ namespace {
 using testing::cycle_edges;
 using testing::sorted;
 
-std::vector<Edge> alpha_shape_of(const std::vector<Point2>& points, const Parameters& params = {}) {
+std::vector<Edge> alpha_shape_of(const std::vector<Point2>& points, const ParameterAssignments& params = {}) {
   return sorted(*find_algorithm("alpha-shape").reconstruct(points, params).curve_edges);
 }
 

@@ -4,6 +4,7 @@
 
 #include "baseline_families.h"
 #include "core/registry.h"
+#include "crust/crust_triangulation.h"
 #include "voronoi/delaunay_voronoi.h"
 #include "test_support.h"
 
@@ -45,9 +46,7 @@ TEST(Crust, EdgesAreDelaunayEdgesOfTheSamples) {
     for (int k = 0; k < 3; ++k) delaunay.push_back(make_edge(tri[k], tri[(k + 1) % 3]));
   }
   std::sort(delaunay.begin(), delaunay.end());
-  PhaseTimer timer;
-  DelaunayVoronoi sites;
-  const auto crust = delaunay_edges_with_voronoi_vertices(samples.points, sites, timer);
+  const auto crust = delaunay_edges_with_voronoi_vertices(dv);
   for (const Edge& e : crust) EXPECT_TRUE(std::binary_search(delaunay.begin(), delaunay.end(), e));
 }
 

@@ -61,10 +61,11 @@ void expect_valid(const Reconstruction& result, size_t point_count, const std::s
       return e[0] >= 0 && e[1] >= 0 && static_cast<size_t>(e[0]) < count && static_cast<size_t>(e[1]) < count && e[0] != e[1];
     });
   };
-  if (result.curve_edges) {
-    const size_t count = result.curve_vertices ? result.curve_vertices->size() : point_count;
-    EXPECT_TRUE(in_range(*result.curve_edges, count)) << where << ": curve edge out of range";
+  if (const auto curve = curve_view(result, {})) {
+    const size_t count = curve->on_input_points ? point_count : curve->vertices.size();
+    EXPECT_TRUE(in_range({curve->edges.begin(), curve->edges.end()}, count)) << where << ": curve edge out of range";
   }
+  if (result.moved_points) EXPECT_EQ(result.moved_points->size(), point_count) << where << ": one position per point";
   if (result.medial_axis) {
     EXPECT_EQ(result.medial_axis->vertices.size(), result.medial_axis->radii.size()) << where;
     EXPECT_TRUE(in_range(result.medial_axis->edges, result.medial_axis->vertices.size())) << where << ": medial-axis edge";
@@ -76,8 +77,8 @@ void expect_valid(const Reconstruction& result, size_t point_count, const std::s
 
 TEST(DegenerateInputs, EveryAlgorithmGivesAValidResultOrAnInputError) {
   const auto cases = degenerate_cases();
-  for (const auto& algorithm : all_algorithms()) {
-    const Parameters defaults = resolve_parameters(algorithm->parameters(), {}, algorithm->name());
+  for (const Algorithm* algorithm : all_algorithms()) {
+    const ParameterAssignments defaults;
     for (const auto& c : cases) {
       const std::string where = algorithm->name() + " on " + c.name;
       try {
@@ -91,8 +92,8 @@ TEST(DegenerateInputs, EveryAlgorithmGivesAValidResultOrAnInputError) {
 }
 
 TEST(DegenerateInputs, AlgorithmsRefuseWhatHasNoCurveWithTheSameKindOfMessage) {
-  for (const auto& algorithm : all_algorithms()) {
-    const Parameters defaults = resolve_parameters(algorithm->parameters(), {}, algorithm->name());
+  for (const Algorithm* algorithm : all_algorithms()) {
+    const ParameterAssignments defaults;
     for (const std::vector<Point2>& points : {std::vector<Point2>{}, std::vector<Point2>{{1, 1}}, std::vector<Point2>{{0, 0}, {1, 1}, {2, 2}}}) {
       EXPECT_THROW(algorithm->reconstruct(points, defaults), InputError) << algorithm->name() << " with " << points.size() << " points";
     }
@@ -113,11 +114,11 @@ std::vector<Point2> jittered_rose(int count) {
 // samples.
 TEST(DegenerateInputs, ScalingAndTranslationByAMillionKeepEveryAlgorithmsEdges) {
   const auto points = jittered_rose(120);
-  for (const auto& algorithm : all_algorithms()) {
-    if (!(algorithm->outputs() & kCurve)) continue;
-    const Parameters defaults = resolve_parameters(algorithm->parameters(), {}, algorithm->name());
+  for (const Algorithm* algorithm : all_algorithms()) {
+    if (!(algorithm->info().outputs & kCurve)) continue;
+    const ParameterAssignments defaults;
     const auto reference = algorithm->reconstruct(points, defaults);
-    if (reference.curve_vertices) continue;  // new vertices move with the input; compared by the metrics instead
+    if (!reference.curve_edges) continue;  // new vertices move with the input; compared by the metrics instead
     for (int mode = 0; mode < 2; ++mode) {
       std::vector<Point2> moved;
       for (const auto& p : points) moved.push_back(mode == 0 ? 1e6 * p : p + Point2{1e6, 1e6});
@@ -135,11 +136,11 @@ TEST(DegenerateInputs, ShufflingThePointsKeepsEveryAlgorithmsEdges) {
   const auto order = testing::random_order(2000, 12);  // shuffled[i] = points[order[i]]
   std::vector<Point2> shuffled;
   for (int i : order) shuffled.push_back(points[i]);
-  for (const auto& algorithm : all_algorithms()) {
-    if (!(algorithm->outputs() & kCurve)) continue;
-    const Parameters defaults = resolve_parameters(algorithm->parameters(), {}, algorithm->name());
+  for (const Algorithm* algorithm : all_algorithms()) {
+    if (!(algorithm->info().outputs & kCurve)) continue;
+    const ParameterAssignments defaults;
     const auto reference = algorithm->reconstruct(points, defaults);
-    if (reference.curve_vertices) continue;  // new vertices: compared by the metrics instead
+    if (!reference.curve_edges) continue;  // new vertices: compared by the metrics instead
     const auto result = algorithm->reconstruct(shuffled, defaults);
     std::vector<Edge> edges;
     for (const auto& e : *result.curve_edges) edges.push_back(make_edge(order[e[0]], order[e[1]]));

@@ -71,8 +71,7 @@ TEST(EvaluateReconstruction, AMissingEdgeLeavesAnOpenCurveWithNoArea) {
 
 TEST(EvaluateReconstruction, ANonInterpolatingCurveUsesItsOwnVertices) {
   Reconstruction shifted;
-  shifted.curve_vertices = std::vector<Point2>{{0.5, 0}, {1.5, 0}, {1.5, 1}, {0.5, 1}};
-  shifted.curve_edges = std::vector<Edge>{{0, 1}, {1, 2}, {2, 3}, {0, 3}};
+  shifted.new_curve = PolylineGraph{{{0.5, 0}, {1.5, 0}, {1.5, 1}, {0.5, 1}}, {{0, 1}, {1, 2}, {2, 3}, {0, 3}}};
   const ReconstructionMetrics m = evaluate_reconstruction(unit_square_truth(), kSamples, shifted);
   EXPECT_DOUBLE_EQ(*m.l2_error, 1.0);
   // Over the diagonal sqrt(2): the shift of 0.5.

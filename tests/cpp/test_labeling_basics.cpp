@@ -12,6 +12,7 @@
 #include "core/registry.h"
 #include "labeling/extract_shapes.h"
 #include "labeling/label_voronoi_vertices.h"
+#include "labeling/side_of_tangent_line.h"
 #include "test_support.h"
 
 namespace curvebench {

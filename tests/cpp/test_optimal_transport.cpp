@@ -14,7 +14,7 @@
 namespace curvebench {
 namespace {
 
-Reconstruction transport_of(const std::vector<Point2>& points, const Parameters& params = {}) {
+Reconstruction transport_of(const std::vector<Point2>& points, const ParameterAssignments& params = {}) {
   return find_algorithm("optimal-transport").reconstruct(points, params);
 }
 
@@ -28,28 +28,29 @@ bool is_closed_polygon(const std::vector<Edge>& edges) {
 TEST(OptimalTransport, DenseEllipseGivesAClosedPolygonOfNewVerticesNearTheCurve) {
   const SampledScene samples = epsilon_sample(ellipse_scene(2.0, 1.0), 0.02, 1);
   const auto result = transport_of(samples.points);
-  ASSERT_TRUE(result.curve_vertices.has_value());
-  const auto& vertices = *result.curve_vertices;
+  ASSERT_TRUE(result.new_curve.has_value());
+  EXPECT_FALSE(result.curve_edges.has_value()) << "no edges between input points";
+  const auto& vertices = result.new_curve->vertices;
   EXPECT_LT(vertices.size(), samples.points.size()) << "a simplification";
-  for (const auto& e : *result.curve_edges) {
-    ASSERT_LT(e[1], static_cast<int>(vertices.size())) << "edges index curve_vertices";
+  for (const auto& e : result.new_curve->edges) {
+    ASSERT_LT(e[1], static_cast<int>(vertices.size())) << "edges index the new vertices";
     EXPECT_LT(e[0], e[1]);
   }
-  EXPECT_TRUE(is_closed_polygon(*result.curve_edges));
+  EXPECT_TRUE(is_closed_polygon(result.new_curve->edges));
   for (const Point2& v : vertices) EXPECT_NEAR(v.x * v.x / 4 + v.y * v.y, 1.0, 0.02);
 }
 
 TEST(OptimalTransport, VerticesParameterSetsTheOutputSize) {
   const auto result = transport_of(testing::uniform_circle(300), {{"vertices", 24}});
-  EXPECT_EQ(result.curve_vertices->size(), 24u);
-  EXPECT_TRUE(is_closed_polygon(*result.curve_edges));
+  EXPECT_EQ(result.new_curve->vertices.size(), 24u);
+  EXPECT_TRUE(is_closed_polygon(result.new_curve->edges));
 }
 
 TEST(OptimalTransport, SameInputSameOutput) {
   const auto points = epsilon_sample(rose_scene(1.0, 0.3, 5), 0.05, 4).points;
   const auto a = transport_of(points), b = transport_of(points);
-  EXPECT_EQ(*a.curve_vertices, *b.curve_vertices);
-  EXPECT_EQ(*a.curve_edges, *b.curve_edges);
+  EXPECT_EQ(a.new_curve->vertices, b.new_curve->vertices);
+  EXPECT_EQ(a.new_curve->edges, b.new_curve->edges);
 }
 
 TEST(OptimalTransport, RefusesBadParametersAndInputWithoutAClosedCurve) {

@@ -31,65 +31,45 @@ std::vector<Edge> square_cycle() {
   return edges;
 }
 
+// A test algorithm named `name` whose run() is `body`.
+template <class Body>
+class TestAlgorithm : public Algorithm {
+ public:
+  TestAlgorithm(std::string name, std::vector<ParameterSpec> parameters, Body body)
+      : info_{std::move(name), "test", kCurve, std::move(parameters), SiteInput::kDistinctPoints}, body_(body) {}
+  const AlgorithmInfo& info() const override { return info_; }
+  SiteResult run(const Sites& sites, const ParameterValues& params, PhaseTimer&) const override { return body_(sites, params); }
+
+ private:
+  AlgorithmInfo info_;
+  Body body_;
+};
+
 // Returns the true square, or only its first `keep` edges.
-class SquareAlgorithm : public Algorithm {
- public:
-  std::string name() const override { return "square"; }
-  std::string description() const override { return "test: the true square cycle"; }
-  unsigned outputs() const override { return kCurve; }
-  std::vector<ParameterSpec> parameters() const override { return {{"keep", 8, "edges of the cycle to return"}}; }
-  Reconstruction reconstruct(std::span<const Point2>, const Parameters& params) const override {
-    Reconstruction r;
-    r.curve_edges = square_cycle();
-    r.curve_edges->resize(static_cast<size_t>(params.at("keep")));
-    r.timing_ms = {{"total", 0.0}};
-    return r;
-  }
-};
-
-class ThrowingAlgorithm : public Algorithm {
- public:
-  std::string name() const override { return "throws"; }
-  std::string description() const override { return "test: throws InputError"; }
-  unsigned outputs() const override { return kCurve; }
-  Reconstruction reconstruct(std::span<const Point2>, const Parameters&) const override { throw InputError("too few points"); }
-};
-
-class AbortingAlgorithm : public Algorithm {
- public:
-  std::string name() const override { return "aborts"; }
-  std::string description() const override { return "test: calls std::abort"; }
-  unsigned outputs() const override { return kCurve; }
-  Reconstruction reconstruct(std::span<const Point2>, const Parameters&) const override { std::abort(); }
-};
-
-class HangingAlgorithm : public Algorithm {
- public:
-  std::string name() const override { return "hangs"; }
-  std::string description() const override { return "test: never returns"; }
-  unsigned outputs() const override { return kCurve; }
-  Reconstruction reconstruct(std::span<const Point2>, const Parameters&) const override {
-    for (;;) ::pause();
-  }
-};
-
+SiteResult square(const Sites&, const ParameterValues& params) {
+  SiteResult r;
+  r.curve_edges = square_cycle();
+  r.curve_edges->resize(static_cast<size_t>(params.integer("keep")));
+  return r;
+}
+SiteResult throws(const Sites&, const ParameterValues&) { throw InputError("too few points"); }
+SiteResult aborts(const Sites&, const ParameterValues&) { std::abort(); }
+SiteResult hangs(const Sites&, const ParameterValues&) {
+  for (;;) ::pause();
+}
 // Allocates and touches memory until it is stopped.
-class GreedyAlgorithm : public Algorithm {
- public:
-  std::string name() const override { return "allocates"; }
-  std::string description() const override { return "test: allocates without bound"; }
-  unsigned outputs() const override { return kCurve; }
-  Reconstruction reconstruct(std::span<const Point2>, const Parameters&) const override {
-    std::vector<std::vector<char>> blocks;
-    for (;;) blocks.emplace_back(std::size_t{16} << 20, 'x');
-  }
-};
+SiteResult allocates(const Sites&, const ParameterValues&) {
+  std::vector<std::vector<char>> blocks;
+  for (;;) blocks.emplace_back(std::size_t{16} << 20, 'x');
+}
 
-const SquareAlgorithm kSquare;
-const GreedyAlgorithm kGreedy;
-const ThrowingAlgorithm kThrows;
-const AbortingAlgorithm kAborts;
-const HangingAlgorithm kHangs;
+using RunFunction = SiteResult (*)(const Sites&, const ParameterValues&);
+using SquareAlgorithm = TestAlgorithm<RunFunction>;
+const SquareAlgorithm kSquare{"square", {integer_parameter("keep", 8, 0, 8, "edges of the cycle to return")}, square};
+const SquareAlgorithm kGreedy{"allocates", {}, allocates};
+const SquareAlgorithm kThrows{"throws", {}, throws};
+const SquareAlgorithm kAborts{"aborts", {}, aborts};
+const SquareAlgorithm kHangs{"hangs", {}, hangs};
 
 void write_square_input(const Json& settings, const std::string& points_path, const std::string& truth_path) {
   if (settings.at("family") != "square") throw std::runtime_error("unknown family");

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "test_support.h"
+#include "labeling/side_of_tangent_line.h"
 #include "voronoi/delaunay_voronoi.h"
 
 namespace curvebench {

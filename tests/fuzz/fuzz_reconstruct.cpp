@@ -2,6 +2,7 @@
 // the rest is a points file. Each run returns a result whose indices are all in range, or
 // throws InputError; anything else (a crash, another exception, a sanitizer report) is a finding.
 #include <cstddef>
+#include <cmath>
 #include <cstdint>
 #include <string_view>
 
@@ -33,9 +34,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (points.size() > 3000) return 0;  // keep each run fast; scale is the benchmark's job
   try {
-    const auto result = algorithm.reconstruct(points, resolve_parameters(algorithm.parameters(), {}, algorithm.name()));
-    if (result.curve_edges) {
-      check_edges(*result.curve_edges, result.curve_vertices ? result.curve_vertices->size() : points.size());
+    const auto result = algorithm.reconstruct(points, {});
+    if (const auto curve = curve_view(result, points)) {
+      check(curve->vertices.size() == (curve->on_input_points ? points.size() : curve->vertices.size()));
+      check_edges(std::vector<Edge>(curve->edges.begin(), curve->edges.end()), curve->vertices.size());
+      for (const Point2& p : curve->vertices) check(std::isfinite(p.x) && std::isfinite(p.y));
     }
     if (result.medial_axis) {
       check(result.medial_axis->radii.size() == result.medial_axis->vertices.size());

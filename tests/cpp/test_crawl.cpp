@@ -19,9 +19,7 @@ using testing::sorted;
 // The edges in input indices (the layer renumbers the sites).
 std::vector<Edge> crawl_of(const std::vector<Point2>& points) {
   const DelaunayVoronoi dv = build_delaunay_voronoi(points);
-  std::vector<Edge> edges = crawl_edges(dv);
-  for (Edge& e : edges) e = make_edge(dv.input_of_site[e[0]], dv.input_of_site[e[1]]);
-  return sorted(edges);
+  return sorted(testing::to_input_indices(dv, crawl_edges(dv)));
 }
 
 // n points at sorted random angles in [0, degrees) on the circle of radius 1 around `center`,

@@ -22,7 +22,7 @@ using testing::sorted;
 // Peel of `points`, as edges between input indices.
 std::vector<Edge> peel_of(const std::vector<Point2>& points, double len = 0.0, bool reference_cb = false) {
   const DelaunayVoronoi dv = build_delaunay_voronoi(points);
-  return sorted(to_input_indices(dv, peel_edges(dv, len, reference_cb)));
+  return sorted(testing::to_input_indices(dv, peel_edges(dv, len, reference_cb)));
 }
 
 // The edges of the open path through points first, ..., first + n - 1.

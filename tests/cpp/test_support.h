@@ -43,6 +43,12 @@ inline std::vector<int> voronoi_cell(const DelaunayVoronoi& dv, int site) {
   return cell;
 }
 
+// Edges between sites of `dv` as edges between input indices (first occurrences).
+inline std::vector<Edge> to_input_indices(const DelaunayVoronoi& dv, std::vector<Edge> site_edges) {
+  for (Edge& e : site_edges) e = make_edge(dv.input_of_site[e[0]], dv.input_of_site[e[1]]);
+  return site_edges;
+}
+
 inline std::vector<Edge> sorted(std::vector<Edge> edges) {
   std::sort(edges.begin(), edges.end());
   return edges;

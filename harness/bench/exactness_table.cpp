@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
 
   std::vector<const Algorithm*> algorithms;
   for (const Algorithm* a : all_algorithms()) {
-    if (a->info().outputs & kCurve) algorithms.push_back(a);
+    if (a->info().outputs & (kCurve | kNewCurve)) algorithms.push_back(a);
   }
   // exact_share[algorithm][family][epsilon]
   std::vector<std::vector<std::vector<double>>> share(algorithms.size(),

@@ -8,7 +8,7 @@ namespace curvebench {
 namespace {
 
 // Definition 5 (label transition rule), applied to `vertex` in the cell of every one of its
-// three samples that already has a finite source vertex (reading note 1: the test comes
+// three samples that already has a finite source vertex (gap 1 in README.md: the test comes
 // before pairing, otherwise the vertex would be its own sample's source and the rule would
 // test nothing). The vertex is inner if it lies strictly across the estimated tangent line
 // of any of them. A vertex exactly on a tangent line is on neither side and stays outer.
@@ -34,7 +34,7 @@ VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
   }
 
   // Extreme Voronoi vertices. Observation 1 assumes one bounded cell per EVV, but triangles
-  // with two hull edges exist, so every triangle with a hull edge is one (reading note 6).
+  // with two hull edges exist, so every triangle with a hull edge is one (gap 6 in README.md).
   // Section 3.3: EVVs inside Conv(P) belong to convex portions (Lemma 5.1) and are inner;
   // a vertex on the hull boundary counts as inside. The others start the walks (Line 4).
   std::vector<int> queue;
@@ -79,7 +79,7 @@ VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
       // estimate can make it inner: this keeps one poor estimate (at a sharp tip, say) from
       // closing off a whole neighbouring pseudo-concavity before its own walk starts.
       if (!outside_hull[vertex] && crosses_a_tangent_line(dv, labels, vertex)) {
-        // Reading note 2: the walk stops at a vertex that just became inner; walking on
+        // Gap 2 (README.md): the walk stops at a vertex that just became inner; walking on
         // would carry the outer label into the interior of the curve.
         labels.inner[vertex] = 1;
         continue;
@@ -104,7 +104,7 @@ VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
     }
   }
 
-  // Reading note 3: a vertex no walk reached lies in the interior of a convex portion (the
+  // Gap 3 (README.md): a vertex no walk reached lies in the interior of a convex portion (the
   // walks cover every pseudo-concavity and the space between curves), so it is inner.
   for (int t = 0; t < triangles; ++t) {
     if (!visited[t]) labels.inner[t] = 1;

@@ -19,7 +19,7 @@ int exact_side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source_t
 // (circumcenter(source) - p), -1 on opposite sides, 0 if the query lies on that line.
 // Evaluated in double precision with an exact rational fallback near zero. Inline: the
 // labeling walk calls it once or more per Voronoi vertex, and inlined, its loads start
-// while the caller's are still in flight (5-7% of the labeling at 10^6 points).
+// while the caller's are still in flight.
 inline int side_of_tangent_line(const DelaunayVoronoi& dv, int site, int source_triangle, int query_triangle) {
   const Point2 p = dv.sites[site];
   const double value = dot(dv.circumcenters[query_triangle] - p, dv.circumcenters[source_triangle] - p);

@@ -50,7 +50,7 @@ class OptimalTransport final : public Algorithm {
          integer_parameter("vertices", 0, 0, 1000000000,
                            "if > 0, collapse until this many vertices remain instead of using tolerance"),
          integer_parameter("relocation", 0, 0, 100,
-                           "vertex relocation steps after each edge collapse (CGAL's default 2 is 2.5 to 6 times slower)"),
+                           "vertex relocation steps after each edge collapse (CGAL's default is 2, several times slower)"),
          boolean_parameter("flip", false,
                            "flip edges so that every edge can be collapsed (CGAL's default; slower, the same output on "
                            "epsilon-samples)"),

@@ -24,8 +24,8 @@ namespace cgal {
 // its indirection: CGAL sorts an array of indices into spatial order (randomized rounds, each
 // along a Hilbert curve) comparing the points they index; here the pairs themselves are
 // sorted, then each is inserted from the face of the one before. The result is the same
-// triangulation, built 10-20% faster at 10^5-10^6 points because the sort reads contiguous
-// memory. Inserting a point equal to an earlier one returns the earlier vertex, whose index is
+// triangulation, built faster at large n because the sort reads contiguous memory (see
+// harness/bench/README.md). Inserting a point equal to an earlier one returns the earlier vertex, whose index is
 // then replaced unless the new one is negative.
 void insert_in_spatial_order(Delaunay& dt, IndexedPoints& indexed) {
   using Traits = CGAL::Spatial_sort_traits_adapter_2<Kernel, CGAL::First_of_pair_property_map<IndexedPoints::value_type>>;
@@ -91,7 +91,7 @@ Point2 exact_circumcenter(Point2 a, Point2 b, Point2 c) {
 // divide by a cross product that rounds to zero. Along a densely sampled curve a fifth of
 // the triangles are that flat (the conditioning grows like the curvature radius over the
 // sample spacing), so they go to the 64-bit mantissa of x87 long double where the platform
-// has one (2^11 times more precise, about 10x cheaper than rationals), and only the flattest
+// has one (2^11 times more precise, and much cheaper than rationals), and only the flattest
 // to exact rational arithmetic.
 template <class Real>
 bool float_circumcircle(Point2 a, Point2 b, Point2 c, Point2& center, double& radius, double& error) {
@@ -225,10 +225,10 @@ void renumber_sites_in_z_order(cgal::Delaunay& dt, DelaunayVoronoi& dv) {
 // consecutive sites are close:
 // - Points that run along the curves (most consecutive points are Delaunay neighbours, as in
 //   outlines traced along a contour) keep their order. A walk along the curve, as the
-//   labeler's is, then reads every array in sequence (at 10^6 points on the benchmark's rose,
-//   37 ns/point for the labeling walk, against 52 with triangles in Z order of centroids).
-// - Any other order is replaced by Z order (renumber_sites_in_z_order): on the same points
-//   shuffled, the labeling walk takes 53 ns/point, against 122 with sites in input order.
+//   labeler's is, then reads every array in sequence (harness/bench/README.md has the
+//   measurements against triangles in Z order of centroids).
+// - Any other order is replaced by Z order (renumber_sites_in_z_order), so that sites close
+//   in the plane are close in the arrays.
 std::vector<cgal::Delaunay::Face_handle> number_sites_and_faces(cgal::Delaunay& dt, DelaunayVoronoi& dv) {
   using Face = cgal::Delaunay::Face_handle;
   struct Keyed {
@@ -256,8 +256,8 @@ std::vector<cgal::Delaunay::Face_handle> number_sites_and_faces(cgal::Delaunay& 
     keyed.push_back({smallest_site(f), f});
   }
   // Along the curves if at least half of the consecutive pairs are Delaunay edges. An
-  // epsilon-sample in curve order has all of them but one per curve; noise of half the
-  // sample spacing (the benchmark's noisy input) keeps 95% of them.
+  // epsilon-sample in curve order has all of them but one per curve; noise of a fraction of
+  // the sample spacing keeps most of them.
   const long long consecutive_pairs = static_cast<long long>(dv.site_count()) - 1;
   if (2 * std::max(forward_pairs, backward_pairs) < consecutive_pairs) {
     renumber_sites_in_z_order(dt, dv);

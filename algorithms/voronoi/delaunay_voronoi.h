@@ -64,7 +64,7 @@ DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points);
 
 // The benchmark's floor: CGAL's documented range insertion of (point, index) pairs, the
 // fastest documented way to a triangulation whose vertices know their input index. Returns
-// its vertex count. build_delaunay_voronoi builds the same triangulation 10-20% faster by
+// its vertex count. build_delaunay_voronoi builds the same triangulation faster by
 // sorting the pairs themselves instead of indices to them (see insert_in_spatial_order).
 int bare_delaunay_vertex_count(std::span<const Point2> points);
 

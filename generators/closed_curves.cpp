@@ -10,6 +10,7 @@
 
 #include "generators/polylines_are_simple.h"
 #include "generators/random.h"
+#include "generators/rose_curve.h"
 #include "generators/scene_builder.h"
 
 namespace curvebench {
@@ -92,7 +93,7 @@ Scene ellipse_scene(double a, double b, int dense) {
 Scene rose_scene(double a, double b, int k, int dense) {
   require(std::isfinite(a) && std::isfinite(b) && a > std::abs(b), "rose: need a > |b| so that r = a + b cos(k t) > 0");
   require(k >= 1, "rose: k must be at least 1");
-  auto points = polar_polyline([a, b, k](double t) { return a + b * std::cos(k * t); }, dense);
+  auto points = closed_parametric_polyline([a, b, k](double t) { return rose_point(a, b, k, t); }, dense);
   return make_scene("rose", {smooth_curve(std::move(points))});
 }
 

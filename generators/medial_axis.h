@@ -16,15 +16,10 @@
 #include <vector>
 
 #include "core/point.h"
+#include "core/reconstruction.h"  // MedialAxis: the true axis has the form of a reconstructed one
 #include "generators/closed_curves.h"
 
 namespace curvebench {
-
-struct MedialAxis {
-  std::vector<Point2> vertices;
-  std::vector<double> radii;  // radius of the maximal disc at each vertex
-  std::vector<Edge> edges;
-};
 
 MedialAxis interior_medial_axis(const Scene& scene, int min_separation = 4);
 MedialAxis circle_medial_axis(Point2 center, double radius);

@@ -1,7 +1,7 @@
 """python -m reports: the report from files only.
 
   python -m reports --out DIR [--results results.jsonl] [--benchmark scaling.json]
-                    [--reconstructions DIR]
+                    [--reconstructions DIR] [--catalogue catalogue.json]
 
 Writes DIR/index.html and, beside it, every figure as PNG and SVG; prints the page's path.
 A section whose input is not given or holds no run of its kind is named on the page as missing.
@@ -9,6 +9,7 @@ A section whose input is not given or holds no run of its kind is named on the p
 from __future__ import annotations
 
 import argparse
+import json
 import pathlib
 import sys
 
@@ -18,6 +19,7 @@ from reports.html_page import write_page
 from reports.reconstructions import read_reconstructions
 from reports.scaling_figures import memory_figure, runtime_figure
 from reports.scaling_results import read_scaling_suite
+from reports.style import use_catalogue
 from reports.summary_table import summary_lines, summary_table_html
 from reports.sweep_results import read_sweep_rows
 
@@ -66,10 +68,14 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--benchmark", type=pathlib.Path, help="curvebench_benchmark --benchmark_format=json output")
     parser.add_argument("--reconstructions", type=pathlib.Path,
                         help="directory of `curvebench reconstruct --output` JSON files (searched recursively)")
+    parser.add_argument("--catalogue", type=pathlib.Path,
+                        help="`curvebench list --json` output: the algorithms' order in tables and legends")
     args = parser.parse_args(argv)
-    for given in (args.results, args.benchmark, args.reconstructions):
+    for given in (args.results, args.benchmark, args.reconstructions, args.catalogue):
         if given is not None and not given.exists():
             parser.error(f"{given}: no such file or directory")
+    if args.catalogue is not None:
+        use_catalogue(json.loads(args.catalogue.read_text()))
     print(build_report(args.out, args.results, args.benchmark, args.reconstructions))
     return 0
 

@@ -39,7 +39,9 @@ class ReconstructionView:
     points: np.ndarray
     status: str
     message: str = ""
-    curve_vertices: np.ndarray | None = None  # what curve_edges index: the input points, or the method's own
+    # What curve_edges index: the input points, their moved positions (a denoising method), or
+    # the method's own vertices.
+    curve_vertices: np.ndarray | None = None
     curve_edges: np.ndarray | None = None
     medial_axis_vertices: np.ndarray | None = None
     medial_axis_edges: np.ndarray | None = None
@@ -73,8 +75,12 @@ def _view(path: pathlib.Path, data: dict) -> ReconstructionView:
                               status=status, message=data.get("message", ""))
     if "curve" in data:
         curve = data["curve"]
-        view.curve_vertices = np.array(curve["vertices"], dtype=float).reshape(-1, 2) if "vertices" in curve \
-            else view.points
+        if "vertices" in curve:
+            view.curve_vertices = np.array(curve["vertices"], dtype=float).reshape(-1, 2)
+        elif "positions" in curve:
+            view.curve_vertices = np.array(curve["positions"], dtype=float).reshape(-1, 2)
+        else:
+            view.curve_vertices = view.points
         view.curve_edges = _edges(curve.get("edges", []))
     if "medial_axis" in data:
         view.medial_axis_vertices = np.array(data["medial_axis"]["vertices"], dtype=float).reshape(-1, 2)

@@ -10,8 +10,10 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (the backend must be chosen first)
 
-# The algorithms curvebench ships, in the order tables and legends list them.
-ALGORITHM_ORDER = ["labeling", "crust", "nn-crust", "local-crust", "alpha-shape", "optimal-transport"]
+# The paper's algorithm first, then the others in the catalogue's order (`curvebench list
+# --json`, read by use_catalogue), else alphabetically. Colours and markers of the shipped
+# algorithms are fixed, so a figure keeps its look as algorithms are added.
+ALGORITHM_ORDER = ["labeling"]
 _ALGORITHM_COLORS = {
     "labeling": "#d62728",
     "crust": "#1f77b4",
@@ -19,11 +21,18 @@ _ALGORITHM_COLORS = {
     "local-crust": "#9467bd",
     "alpha-shape": "#8c564b",
     "optimal-transport": "#ff7f0e",
+    "hnn-crust": "#17becf",
+    "crawl": "#bcbd22",
+    "peel": "#e377c2",
+    "shape-hull": "#7f7f7f",
+    "fitconnect": "#393b79",
+    "stretchdenoise": "#637939",
 }
 _ALGORITHM_MARKERS = {"labeling": "o", "crust": "s", "nn-crust": "^", "local-crust": "D", "alpha-shape": "v",
-                      "optimal-transport": "P"}
-_OTHER_COLORS = ["#17becf", "#bcbd22", "#e377c2", "#7f7f7f", "#393b79", "#637939"]
-_OTHER_MARKERS = ["X", "*", "h", "<", ">", "p"]
+                      "optimal-transport": "P", "hnn-crust": "X", "crawl": "*", "peel": "h", "shape-hull": "<",
+                      "fitconnect": ">", "stretchdenoise": "p"}
+_OTHER_COLORS = ["#843c39", "#7b4173", "#5254a3", "#8ca252", "#bd9e39", "#ad494a"]
+_OTHER_MARKERS = ["d", "H", "8", "1", "2", "3"]
 
 DELAUNAY_COLOR = "#222222"
 
@@ -31,6 +40,11 @@ DELAUNAY_COLOR = "#222222"
 # the labeling, claimed) to reconstruct exactly.
 THEORETICAL_EPSILON_BOUNDS = {"crust": 0.252, "nn-crust": 1 / 3, "labeling": 0.4}
 BOUND_NOTES = {"crust": "proved", "nn-crust": "proved", "labeling": "claimed"}
+
+
+def use_catalogue(catalogue: list[dict]) -> None:
+    """Orders algorithms as the catalogue lists them (after the paper's)."""
+    ALGORITHM_ORDER[1:] = [entry["name"] for entry in catalogue if entry["name"] != "labeling"]
 
 
 def sorted_algorithms(names) -> list[str]:

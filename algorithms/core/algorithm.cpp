@@ -1,5 +1,7 @@
 #include "core/algorithm.h"
 
+#include <CGAL/exceptions.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -95,18 +97,29 @@ Reconstruction to_input(SiteResult result, std::span<const int> input_of_site, s
   return out;
 }
 
+// CGAL checks its preconditions with exceptions; with coordinates near the limits of double
+// precision (beyond about 1e150) a construction inside the triangulation can overflow and
+// fail one. That is a limit of the input, reported as such rather than as a crash.
+DelaunayVoronoi triangulate(std::span<const Point2> points, const std::string& algorithm) {
+  try {
+    return build_delaunay_voronoi(points);
+  } catch (const CGAL::Failure_exception& e) {
+    throw InputError(algorithm + ": CGAL's Delaunay triangulation failed its check '" + e.expression() +
+                     "' on this input (coordinates near the limits of double precision?)");
+  }
+}
+
 }  // namespace
 
 Reconstruction Algorithm::reconstruct(std::span<const Point2> points,
                                       const ParameterAssignments& given) const {
   const AlgorithmInfo& about = info();
   const ParameterValues parameters = resolve_parameters(about.name, about.parameters, given);
-  if (points.empty()) throw InputError(about.name + ": the input has no points");
   require_finite(points, about.name);
   PhaseTimer timer;
   Reconstruction result;
   if (about.input == SiteInput::kDelaunay) {
-    const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+    const DelaunayVoronoi dv = triangulate(points, about.name);
     timer.lap("delaunay");
     require_a_plane(dv.site_count(), dv.dimension < 2, about.name);
     SiteResult site_result = run(Sites{dv.sites, &dv}, parameters, timer);

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "core/registry.h"
-#include "generators/closed_curves.h"
+#include "generators/families.h"
 #include "generators/samplers.h"
 
 namespace curvebench {
@@ -23,18 +23,20 @@ struct Family {
   std::vector<Scene> scenes;  // each scene is sampled with 3 seeds
 };
 
+// From the family table, at the dense vertex counts the baseline tests use.
 std::vector<Family> families() {
   std::vector<Family> list;
-  list.push_back({"circle", {circle_scene(1.0)}});
-  list.push_back({"ellipse 2:1", {ellipse_scene(2.0, 1.0)}});
-  list.push_back({"ellipse 5:1", {ellipse_scene(5.0, 1.0)}});
-  list.push_back({"rose", {rose_scene(1.0, 0.3, 5)}});
+  list.push_back({"circle", {curve_family_scene("circle", {}, 0, 4096)}});
+  list.push_back({"ellipse 2:1", {curve_family_scene("ellipse", {{"a", 2}, {"b", 1}}, 0, 8192)}});
+  list.push_back({"ellipse 5:1", {curve_family_scene("ellipse", {{"a", 5}, {"b", 1}}, 0, 8192)}});
+  list.push_back({"rose", {curve_family_scene("rose", {}, 0, 8192)}});
   Family random{"random smooth (20)", {}};
-  for (std::uint64_t seed = 1; seed <= 20; ++seed) random.scenes.push_back(random_fourier_scene(seed));
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) random.scenes.push_back(curve_family_scene("random", {}, seed, 8192));
   list.push_back(std::move(random));
   Family several{"2-5 curves (8)", {}};
   for (int count = 2; count <= 5; ++count)
-    for (std::uint64_t seed = 1; seed <= 2; ++seed) several.scenes.push_back(disjoint_curves_scene(count, 10 * count + seed));
+    for (std::uint64_t seed = 1; seed <= 2; ++seed)
+      several.scenes.push_back(curve_family_scene("disjoint", {{"count", count}}, 10 * count + seed, 4096));
   list.push_back(std::move(several));
   return list;
 }

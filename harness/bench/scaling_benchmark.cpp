@@ -40,12 +40,10 @@
 #include <benchmark/benchmark.h>
 #include <sys/wait.h>
 #include <time.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -56,6 +54,10 @@
 #include <vector>
 
 #include "core/registry.h"
+#include "generators/families.h"
+#include "generators/rose_curve.h"
+#include "process/child_process.h"
+#include "process/proc_status.h"
 #include "voronoi/delaunay_voronoi.h"
 
 namespace curvebench {
@@ -73,24 +75,28 @@ Settings& settings() {
   return value;
 }
 
-Point2 rose_point(double t) {
-  const double r = 1.0 + 0.3 * std::cos(5 * t);
-  return {r * std::cos(t), r * std::sin(t)};
+// The rose family with its default shape, r = 1 + 0.3 cos(5t).
+struct Rose {
+  double a, b;
+  int k;
+};
+
+const Rose& rose() {
+  static const Rose shape = [] {
+    const ShapeValues values = resolve_shape(find_curve_family("rose"), {});
+    return Rose{values.at("a"), values.at("b"), static_cast<int>(values.at("k"))};
+  }();
+  return shape;
 }
 
-Point2 rose_unit_normal(double t) {
-  const double r = 1.0 + 0.3 * std::cos(5 * t), dr = -1.5 * std::sin(5 * t);
-  const double tx = dr * std::cos(t) - r * std::sin(t), ty = dr * std::sin(t) + r * std::cos(t);
-  const double length = std::hypot(tx, ty);
-  return {ty / length, -tx / length};
-}
+Point2 point_on_rose(double t) { return rose_point(rose().a, rose().b, rose().k, t); }
 
 double rose_length() {
   constexpr int kSegments = 100'000;
   double length = 0.0;
   for (int i = 0; i < kSegments; ++i) {
-    const Point2 a = rose_point(2 * std::numbers::pi * i / kSegments);
-    const Point2 b = rose_point(2 * std::numbers::pi * (i + 1) / kSegments);
+    const Point2 a = point_on_rose(2 * std::numbers::pi * i / kSegments);
+    const Point2 b = point_on_rose(2 * std::numbers::pi * (i + 1) / kSegments);
     length += std::hypot(b.x - a.x, b.y - a.y);
   }
   return length;
@@ -105,12 +111,12 @@ std::vector<Point2> make_points(const std::string& input, int n) {
   std::sort(t.begin(), t.end());
   std::vector<Point2> points;
   points.reserve(n);
-  for (double angle : t) points.push_back(rose_point(angle));
+  for (double angle : t) points.push_back(point_on_rose(angle));
   if (input == "noisy") {
     std::normal_distribution<double> gaussian(0.0, 0.5 * rose_length() / n);
     for (std::size_t i = 0; i < points.size(); ++i) {
       const double shift = gaussian(rng);
-      const Point2 normal = rose_unit_normal(t[i]);
+      const Point2 normal = rose_unit_normal(rose().a, rose().b, rose().k, t[i]);
       points[i] = {points[i].x + shift * normal.x, points[i].y + shift * normal.y};
     }
   }
@@ -137,16 +143,6 @@ double cpu_seconds() {
   return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
 }
 
-// A "Key:   value kB" line of a /proc file, in MiB.
-double proc_field_mib(const char* path, const std::string& key) {
-  std::ifstream file(path);
-  std::string line;
-  while (std::getline(file, line)) {
-    if (line.rfind(key + ":", 0) == 0) return std::stod(line.substr(key.size() + 1)) / 1024.0;
-  }
-  return 0.0;
-}
-
 void reconstruct_once(const std::string& algorithm, std::span<const Point2> points) {
   if (algorithm == "delaunay") {
     benchmark::DoNotOptimize(bare_delaunay_vertex_count(points));
@@ -165,14 +161,14 @@ int run_peak_memory_child(const std::string& run) {
   std::getline(fields, input, '/');
   std::getline(fields, n);
   const auto points = make_points(input, std::stoi(n));
-  const double input_mib = proc_field_mib("/proc/self/status", "VmHWM");
+  const double input_mib = proc_status_kib(0, "VmHWM") / 1024.0;
   try {
     reconstruct_once(algorithm, points);
   } catch (const InputError& e) {  // an algorithm's own limit (optimal-transport's max_points)
     std::printf("%s\n", e.what());
     return 1;
   }
-  std::printf("%.3f %.3f\n", input_mib, proc_field_mib("/proc/self/status", "VmHWM"));
+  std::printf("%.3f %.3f\n", input_mib, proc_status_kib(0, "VmHWM") / 1024.0);
   return 0;
 }
 
@@ -182,17 +178,10 @@ struct PeakMemory {
 };
 
 PeakMemory measure_peak_memory_in_child(const std::string& algorithm, const std::string& input, int n) {
-  char executable[4096] = {};
-  const ssize_t length = readlink("/proc/self/exe", executable, sizeof executable - 1);
-  if (length <= 0) return {0, 0, "cannot find this executable in /proc/self/exe"};
-  const std::string command = std::string("'") + executable + "' --peak_memory_child=" + algorithm + "/" + input +
-                              "/" + std::to_string(n) + " 2>&1";
-  FILE* child = popen(command.c_str(), "r");
-  if (!child) return {0, 0, "cannot start the memory-measuring process"};
-  std::string output;
-  char buffer[512];
-  while (std::fgets(buffer, sizeof buffer, child)) output += buffer;
-  const int status = pclose(child);
+  const std::string run = algorithm + "/" + input + "/" + std::to_string(n);
+  const ChildExit end = run_child(start_this_executable({"--peak_memory_child=" + run}, true), {});
+  const int status = end.wait_status;
+  std::string output = end.output;
   PeakMemory memory;
   while (!output.empty() && output.back() == '\n') output.pop_back();
   if (WIFEXITED(status) && WEXITSTATUS(status) == 1) {
@@ -226,7 +215,7 @@ std::string reason_to_skip(const std::map<int, Run>& sizes, int n) {
   const double growth = static_cast<double>(n) / previous_n;
   const double predicted_seconds = previous.seconds * growth;
   const double predicted_mib = previous.memory.peak_mib * growth;
-  const double available_mib = proc_field_mib("/proc/meminfo", "MemAvailable");
+  const double available_mib = meminfo_kib("MemAvailable") / 1024.0;
   char reason[256] = "";
   if (predicted_seconds > settings().max_run_seconds) {
     std::snprintf(reason, sizeof reason, "skipped: about %.0f s predicted from n=%d, over --max_run_seconds=%g",

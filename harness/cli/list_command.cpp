@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <iostream>
 
 #include "cli/commands.h"
@@ -19,7 +20,10 @@ void add_list_command(CLI::App& app) {
     for (const Algorithm* algorithm : algorithms) {
       const AlgorithmInfo& info = algorithm->info();
       std::string produces;
-      for (const auto& output : output_names(info.outputs)) produces += (produces.empty() ? "" : ", ") + output;
+      for (std::string output : output_names(info.outputs)) {
+        std::replace(output.begin(), output.end(), '_', ' ');
+        produces += (produces.empty() ? "" : ", ") + output;
+      }
       std::cout << info.name << "\n  " << info.citation << "\n  produces: " << produces << "\n";
       for (const auto& p : info.parameters) {
         std::cout << "  --param " << p.name << "=" << value_text(p.default_value) << "  (" << type_name(p.type) << ": "

@@ -1,11 +1,4 @@
-#include <fcntl.h>
-#include <sys/prctl.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
-#include <csignal>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -14,6 +7,9 @@
 
 #include "cli/commands.h"
 #include "core/registry.h"
+#include "generators/generate.h"
+#include "io/generated_input_files.h"
+#include "process/child_process.h"
 #include "sweep/run_in_child_processes.h"
 #include "sweep/run_sweep.h"
 
@@ -34,67 +30,14 @@ struct SweepCommandOptions {
   bool quiet = false;
 };
 
-std::string option_value(const Json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
-
-// `curvebench generate` options for generator settings: {"noise_scale": "lfs"} is
-// --noise-scale lfs, {"shape": {"k": 5}} is --shape k=5.
-std::vector<std::string> generate_arguments(const Json& settings, const std::string& points_path, const std::string& truth_path) {
-  std::vector<std::string> arguments{"curvebench", "generate"};
-  for (const auto& [key, value] : settings.items()) {
-    if (key == "shape" && value.is_object()) {
-      for (const auto& [name, v] : value.items()) arguments.insert(arguments.end(), {"--shape", name + "=" + option_value(v)});
-      continue;
-    }
-    std::string option = "--" + key;
-    std::replace(option.begin(), option.end(), '_', '-');
-    arguments.insert(arguments.end(), {option, option_value(value)});
-  }
-  arguments.insert(arguments.end(), {"--points", points_path, "--truth", truth_path});
-  return arguments;
-}
-
-// Runs this executable's `generate` subcommand; throws with its last line on stderr if it fails.
-void generate_with_this_executable(const Json& settings, const std::string& points_path, const std::string& truth_path) {
-  const std::vector<std::string> arguments = generate_arguments(settings, points_path, truth_path);
-  int error_pipe[2];
-  if (::pipe2(error_pipe, O_CLOEXEC) != 0) throw std::runtime_error("pipe failed");
-  const pid_t pid = ::fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-    const int null_device = ::open("/dev/null", O_WRONLY);
-    ::dup2(null_device, 1);
-    ::dup2(error_pipe[1], 2);
-    std::vector<char*> argv;
-    for (const auto& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    ::execv("/proc/self/exe", argv.data());
-    ::_exit(127);
-  }
-  ::close(error_pipe[1]);
-  std::string errors;
-  char buffer[4096];
-  for (ssize_t n; (n = ::read(error_pipe[0], buffer, sizeof buffer)) != 0;) {
-    if (n > 0) errors.append(buffer, static_cast<size_t>(n));
-    else if (errno != EINTR) break;
-  }
-  ::close(error_pipe[0]);
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
-  while (!errors.empty() && errors.back() == '\n') errors.pop_back();
-  std::string message = errors.substr(errors.rfind('\n') == std::string::npos ? 0 : errors.rfind('\n') + 1);
-  const std::string prefix = "curvebench: error: ";
-  if (message.starts_with(prefix)) message.erase(0, prefix.size());
-  throw std::runtime_error(message.empty() ? "curvebench generate failed" : message);
+// Generates the input with these settings (a sweep configuration's keys are the settings'
+// field names) and writes its files.
+void generate_input_files(const Json& settings, const std::string& points_path, const std::string& truth_path) {
+  write_generated_input_files(generate(generator_settings_from_json(settings)), points_path, truth_path);
 }
 
 // Replaces this process with this executable's hidden `sweep-run` subcommand for one run.
-void exec_sweep_run(const std::string& spec) {
-  const char* argv[] = {"curvebench", "sweep-run", spec.c_str(), nullptr};
-  ::execv("/proc/self/exe", const_cast<char* const*>(argv));
-}
+void exec_sweep_run(const std::string& spec) { exec_this_executable({"sweep-run", spec}); }
 
 void parse_shard(const std::string& text, SweepOptions& options) {
   const size_t slash = text.find('/');
@@ -120,7 +63,7 @@ void run(const SweepCommandOptions& o) {
   }
   SweepEnvironment environment;
   environment.algorithms = all_algorithms();
-  environment.generate_input = generate_with_this_executable;
+  environment.generate_input = generate_input_files;
   environment.start_fresh_process = exec_sweep_run;
   SweepPlan plan;
   try {

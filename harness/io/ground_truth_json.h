@@ -15,41 +15,13 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
-#include <limits>
 #include <string>
-#include <vector>
 
-#include "core/point.h"
+#include "generators/ground_truth.h"
 
 namespace curvebench {
 
 inline constexpr const char* kGroundTruthFormat = "curvebench-ground-truth/1";
-
-struct GroundTruthCurve {
-  std::vector<Point2> vertices;  // closed implicitly
-  std::vector<double> lfs;       // one per vertex
-};
-
-struct GroundTruthSample {
-  int curve = -1;  // index into curves, -1 for an outlier
-  double parameter = std::numeric_limits<double>::quiet_NaN();
-  double lfs = std::numeric_limits<double>::quiet_NaN();
-  bool is_outlier() const { return curve < 0; }
-};
-
-struct GroundTruthMedialAxis {
-  std::vector<Point2> vertices;
-  std::vector<Edge> edges;
-};
-
-struct GroundTruth {
-  nlohmann::ordered_json generator = nlohmann::ordered_json::object();  // settings, incl. "seed"
-  std::vector<GroundTruthCurve> curves;
-  std::vector<GroundTruthSample> samples;  // one per point of the points file
-  std::vector<Edge> edges;
-  GroundTruthMedialAxis medial_axis;
-  std::vector<Point2> dominant_points;
-};
 
 nlohmann::ordered_json ground_truth_to_json(const GroundTruth& truth);
 

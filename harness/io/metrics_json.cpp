@@ -20,6 +20,10 @@ nlohmann::ordered_json metrics_to_json(const ReconstructionMetrics& metrics) {
   json["true_curves"] = metrics.true_curves;
   if (metrics.l2_error) json["l2_error"] = *metrics.l2_error;
   if (metrics.hausdorff) json["hausdorff"] = number_or_null(*metrics.hausdorff);
+  if (metrics.vertex_distance) {
+    json["vertex_distance_mean"] = metrics.vertex_distance->mean;
+    json["vertex_distance_max"] = metrics.vertex_distance->max;
+  }
   if (metrics.topology) {
     json["manifold"] = metrics.topology->manifold;
     json["components"] = metrics.topology->components;

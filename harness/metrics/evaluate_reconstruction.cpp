@@ -61,6 +61,14 @@ ReconstructionMetrics evaluate_reconstruction(const GroundTruth& truth, std::spa
     metrics.l2_error = l2_error(true_curves, curve);
     metrics.hausdorff = hausdorff_distance(true_curves, curve, hausdorff_tolerance) / diagonal;
     metrics.topology = curve_topology(edges);
+    std::vector<char> on_curve(view->vertices.size(), 0);
+    for (const Edge& e : edges) on_curve[e[0]] = on_curve[e[1]] = 1;
+    std::vector<Point2> curve_vertices;
+    for (std::size_t v = 0; v < on_curve.size(); ++v) {
+      if (on_curve[v]) curve_vertices.push_back(view->vertices[v]);
+    }
+    DistanceToCurve distance = distance_to_curve(true_curves, curve_vertices);
+    metrics.vertex_distance = DistanceToCurve{distance.mean / diagonal, distance.max / diagonal};
     if (view->on_input_points) metrics.edges = edge_agreement(edges, truth.edges);
   }
 

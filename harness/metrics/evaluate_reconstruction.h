@@ -1,4 +1,4 @@
-// Every metric of DESIGN.md ("Metrics") for one reconstruction against its ground truth.
+// Every metric (README.md, "Metrics") of one reconstruction against its ground truth.
 //
 // In:  the ground truth, the input points it describes (file order, one per truth sample)
 //      and a reconstruction of those points.
@@ -11,6 +11,9 @@
 //                                  the reconstruction has no edge
 //                  topology        manifold, components, closed components (curve_topology.h),
 //                                  compared with true_curves
+//                  vertex_distance mean and largest distance from the curve's vertices (the
+//                                  ends of its edges, where a denoising method moved them) to
+//                                  the true curves, over the diagonal (distance_to_curve.h)
 //                  edges           precision, recall, exactness against the true adjacency
 //                                  (edge_agreement.h); only for interpolating reconstructions,
 //                                  whose edges join input points
@@ -29,6 +32,7 @@
 #include "core/reconstruction.h"
 #include "io/ground_truth_json.h"
 #include "metrics/curve_topology.h"
+#include "metrics/distance_to_curve.h"
 #include "metrics/dominant_point_quality.h"
 #include "metrics/edge_agreement.h"
 
@@ -38,6 +42,7 @@ struct ReconstructionMetrics {
   int true_curves = 0;
   std::optional<double> l2_error;
   std::optional<double> hausdorff;  // over the diagonal; may be infinite
+  std::optional<DistanceToCurve> vertex_distance;  // over the diagonal
   std::optional<CurveTopology> topology;
   std::optional<EdgeAgreement> edges;
   std::optional<double> medial_axis_hausdorff;  // over the diagonal; may be infinite

@@ -70,6 +70,7 @@ gallery_shape rose-20pct-outliers --family rose --epsilon 0.2 --outliers 0.2 --s
 for points in "${own_points[@]}"; do
   cp "$points" "$out/gallery/"
 done
+"$curvebench" list --json > "$out/catalogue.json"
 algorithms=$("$curvebench" list | grep -v '^ ')
 for points in "$out"/gallery/*; do
   for algorithm in $algorithms; do
@@ -81,6 +82,7 @@ done
 
 step "report"
 page=$(PYTHONPATH="$CURVEBENCH_ROOT" "$CURVEBENCH_VENV/bin/python" -m reports --out "$out/report" \
-  --results "$out/results.jsonl" --benchmark "$out/scaling.json" --reconstructions "$out/gallery")
+  --results "$out/results.jsonl" --benchmark "$out/scaling.json" --reconstructions "$out/gallery" \
+  --catalogue "$out/catalogue.json")
 step "done"
 echo "$page"

@@ -1,43 +1,24 @@
 #include "sweep/run_in_child_processes.h"
 
-#include <fcntl.h>
 #include <poll.h>
-#include <signal.h>
-#include <sys/prctl.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <algorithm>
-#include <fstream>
 #include <cerrno>
-#include <chrono>
-#include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <stdexcept>
 #include <system_error>
 #include <vector>
 
+#include "process/child_process.h"
+
 namespace curvebench {
 namespace {
-
-using Clock = std::chrono::steady_clock;
 
 // The first byte a child sends says whether `work` returned or threw.
 constexpr char kReturned = 'R';
 constexpr char kThrew = 'T';
-
-struct RunningChild {
-  int task = 0;
-  pid_t pid = -1;
-  int pipe_read_end = -1;
-  std::string received;
-  Clock::time_point started;
-};
-
-[[noreturn]] void fail_system(const char* what) { throw std::system_error(errno, std::generic_category(), what); }
 
 void write_fully(int fd, const std::string& text) {
   size_t written = 0;
@@ -49,60 +30,24 @@ void write_fully(int fd, const std::string& text) {
   }
 }
 
-RunningChild start_child(int task, const std::function<std::string(int)>& work) {
-  int ends[2];
-  if (::pipe2(ends, O_CLOEXEC) != 0) fail_system("pipe");
-  std::cout.flush();  // or the child would print the parent's buffered output again
-  std::cerr.flush();
-  std::fflush(nullptr);
-  const pid_t pid = ::fork();
-  if (pid < 0) fail_system("fork");
-  if (pid == 0) {
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // do not outlive an interrupted sweep
-    ::close(ends[0]);
-    ::dup2(ends[1], STDOUT_FILENO);  // without O_CLOEXEC: a program exec'd by `work` inherits it
-    ::close(ends[1]);
-    report_child_result([&] { return work(task); });
-    ::_exit(0);  // skip the parent's atexit handlers and static destructors
-  }
-  ::close(ends[1]);
-  return {task, pid, ends[0], {}, Clock::now()};
-}
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-// Resident memory of a running child in kilobytes, from /proc (0 if it is already gone).
-long resident_kilobytes(pid_t pid) {
-  std::ifstream statm("/proc/" + std::to_string(pid) + "/statm");
-  long size_pages = 0, resident_pages = 0;
-  if (!(statm >> size_pages >> resident_pages)) return 0;
-  return resident_pages * (::sysconf(_SC_PAGESIZE) / 1024);
-}
-
-ChildOutcome reap(RunningChild& child, bool timed_out, long over_memory_limit_kilobytes) {
-  if (timed_out || over_memory_limit_kilobytes > 0) ::kill(child.pid, SIGKILL);
-  int status = 0;
-  rusage usage{};
-  while (::wait4(child.pid, &status, 0, &usage) < 0) {
-    if (errno != EINTR) fail_system("wait4");
-  }
-  ::close(child.pipe_read_end);
+ChildOutcome outcome_of(const ChildExit& end, long memory_limit_kilobytes) {
   ChildOutcome outcome;
-  outcome.peak_memory_kilobytes = usage.ru_maxrss;  // kilobytes on Linux
-  outcome.wall_seconds = seconds_since(child.started);
-  const bool exited_cleanly = WIFEXITED(status) && WEXITSTATUS(status) == 0 && !child.received.empty();
-  if (timed_out) {
+  outcome.peak_memory_kilobytes = end.peak_memory_kilobytes;
+  outcome.wall_seconds = end.wall_seconds;
+  const int status = end.wait_status;
+  const bool exited_cleanly = WIFEXITED(status) && WEXITSTATUS(status) == 0 && !end.output.empty();
+  if (end.state == ChildState::kTimedOut) {
     outcome.ending = ChildOutcome::Ending::kTimedOut;
-  } else if (over_memory_limit_kilobytes > 0) {
+  } else if (end.state == ChildState::kOverMemory) {
     outcome.ending = ChildOutcome::Ending::kCrashed;
-    outcome.failure = "killed: resident memory over the limit of " + std::to_string(over_memory_limit_kilobytes / 1024) + " MiB";
-  } else if (exited_cleanly && child.received.front() == kReturned) {
+    outcome.failure = "killed: resident memory over the limit of " + std::to_string(memory_limit_kilobytes / 1024) + " MiB";
+  } else if (exited_cleanly && end.output.front() == kReturned) {
     outcome.ending = ChildOutcome::Ending::kFinished;
-    outcome.output = child.received.substr(1);
+    outcome.output = end.output.substr(1);
   } else {
     outcome.ending = ChildOutcome::Ending::kCrashed;
     if (exited_cleanly) {
-      outcome.failure = "uncaught exception: " + child.received.substr(1);
+      outcome.failure = "uncaught exception: " + end.output.substr(1);
     } else if (WIFSIGNALED(status)) {
       outcome.failure = std::string("killed by signal ") + std::to_string(WTERMSIG(status)) + " (" + ::strsignal(WTERMSIG(status)) + ")";
     } else {
@@ -131,46 +76,34 @@ void run_in_child_processes(int task_count, int parallel_jobs, double timeout_se
                             const std::function<std::string(int task)>& work,
                             const std::function<void(int task, const ChildOutcome& outcome)>& on_finish) {
   if (parallel_jobs < 1) throw std::invalid_argument("at least one job must run at a time");
-  std::vector<RunningChild> running;
+  const ChildLimits limits{timeout_seconds, memory_limit_kilobytes};
+  std::vector<ChildProcess> running;
+  std::vector<int> running_tasks;  // the task of each running child
   int next_task = 0;
   while (next_task < task_count || !running.empty()) {
     while (next_task < task_count && static_cast<int>(running.size()) < parallel_jobs) {
-      running.push_back(start_child(next_task++, work));
-    }
-    int wait_milliseconds = -1;
-    if (timeout_seconds > 0) {
-      double soonest = timeout_seconds;
-      for (const auto& child : running) soonest = std::min(soonest, timeout_seconds - seconds_since(child.started));
-      wait_milliseconds = static_cast<int>(std::ceil(std::max(0.0, soonest) * 1000.0));
-    }
-    if (memory_limit_kilobytes > 0) {
-      constexpr int kMemoryCheckMilliseconds = 50;
-      wait_milliseconds = wait_milliseconds < 0 ? kMemoryCheckMilliseconds : std::min(wait_milliseconds, kMemoryCheckMilliseconds);
+      const int task = next_task++;
+      running.push_back(start_child([&] { report_child_result([&] { return work(task); }); }));
+      running_tasks.push_back(task);
     }
     std::vector<pollfd> watched;
-    for (const auto& child : running) watched.push_back({child.pipe_read_end, POLLIN, 0});
-    if (::poll(watched.data(), watched.size(), wait_milliseconds) < 0 && errno != EINTR) fail_system("poll");
-
-    std::vector<RunningChild> still_running;
+    for (const auto& child : running) watched.push_back({child.output_fd, POLLIN, 0});
+    if (::poll(watched.data(), watched.size(), next_check_milliseconds(running, limits)) < 0 && errno != EINTR) {
+      throw std::system_error(errno, std::generic_category(), "poll");
+    }
+    std::vector<ChildProcess> still_running;
+    std::vector<int> still_running_tasks;
     for (size_t i = 0; i < running.size(); ++i) {
-      RunningChild& child = running[i];
-      bool finished = false;
-      if (watched[i].revents != 0) {
-        char buffer[65536];
-        const ssize_t n = ::read(child.pipe_read_end, buffer, sizeof buffer);
-        if (n > 0) child.received.append(buffer, static_cast<size_t>(n));
-        finished = n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN);
-      }
-      const bool timed_out = !finished && timeout_seconds > 0 && seconds_since(child.started) >= timeout_seconds;
-      const bool over_memory = !finished && !timed_out && memory_limit_kilobytes > 0 &&
-                               resident_kilobytes(child.pid) > memory_limit_kilobytes;
-      if (finished || timed_out || over_memory) {
-        on_finish(child.task, reap(child, timed_out, over_memory ? memory_limit_kilobytes : 0));
+      const ChildState state = watch_child(running[i], watched[i].revents != 0, limits);
+      if (state == ChildState::kRunning) {
+        still_running.push_back(std::move(running[i]));
+        still_running_tasks.push_back(running_tasks[i]);
       } else {
-        still_running.push_back(std::move(child));
+        on_finish(running_tasks[i], outcome_of(finish_child(running[i], state), memory_limit_kilobytes));
       }
     }
     running = std::move(still_running);
+    running_tasks = std::move(still_running_tasks);
   }
 }
 

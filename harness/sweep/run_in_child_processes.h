@@ -11,11 +11,12 @@
 //      uncaught exception; `failure` says which), or timed out (killed after the limit), with
 //      the peak resident memory of its child process from getrusage.
 //
-// Children are forked from the calling process, which must be single-threaded, and are
-// killed if it dies. They start as a copy of it, so their peak memory includes the
-// caller's resident memory at the fork. A child reports on its standard output, which is a
-// pipe to the caller; `work` may also replace the child's process image (exec) with a
-// program that reports there itself, through report_child_result.
+// Children are started, watched and reaped by process/child_process.h: forked from the
+// calling process, which must be single-threaded, and killed if it dies. They start as a
+// copy of it, so their peak memory includes the caller's resident memory at the fork. A
+// child reports on its standard output, which is a pipe to the caller; `work` may also
+// replace the child's process image (exec) with a program that reports there itself,
+// through report_child_result.
 #pragma once
 
 #include <functional>

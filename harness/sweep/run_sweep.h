@@ -36,8 +36,9 @@ namespace curvebench {
 
 struct SweepEnvironment {
   std::vector<const Algorithm*> algorithms;
-  // Writes the points file and the ground-truth JSON of the input with these settings;
-  // throws with a one-line message if it cannot. Called in a child process.
+  // Writes the points file and the ground-truth JSON of the input with these settings (the
+  // `curvebench sweep` command: generators/generate.h); throws with a one-line message if
+  // it cannot. Called in a child process.
   std::function<void(const nlohmann::ordered_json& settings, const std::string& points_path, const std::string& truth_path)>
       generate_input;
   // If set, every run takes place in a fresh process rather than in the forked copy of the

@@ -1,6 +1,7 @@
 // The curve families the baseline tests (crust, NN-crust, local crust) share with the
-// labeler's: a circle, ellipses of aspect 2 and 5, the rose r = 1 + 0.3 cos(5t), random
-// smooth closed curves and scenes of several disjoint curves, with fixed seeds. Plus the
+// labeler's, from the family table (generators/families.h): a circle, ellipses of aspect 2
+// and 5, the rose r = 1 + 0.3 cos(5t), random smooth closed curves and scenes of several
+// disjoint curves, with fixed seeds. Plus the
 // helpers to epsilon-sample them and to ask whether a reconstruction is exact.
 #pragma once
 
@@ -12,7 +13,7 @@
 #include <vector>
 
 #include "core/registry.h"
-#include "generators/closed_curves.h"
+#include "generators/families.h"
 #include "generators/samplers.h"
 
 namespace curvebench::testing {
@@ -26,16 +27,16 @@ struct Family {
 inline const std::vector<Family>& curve_families() {
   static const std::vector<Family> families = [] {
     std::vector<Family> list = {
-        {"circle", circle_scene(1.0)},
-        {"ellipse 2:1", ellipse_scene(2.0, 1.0)},
-        {"ellipse 5:1", ellipse_scene(5.0, 1.0)},
-        {"rose", rose_scene(1.0, 0.3, 5)},
+        {"circle", curve_family_scene("circle", {}, 0, 4096)},
+        {"ellipse 2:1", curve_family_scene("ellipse", {{"a", 2}, {"b", 1}}, 0, 8192)},
+        {"ellipse 5:1", curve_family_scene("ellipse", {{"a", 5}, {"b", 1}}, 0, 8192)},
+        {"rose", curve_family_scene("rose", {}, 0, 8192)},
     };
     for (std::uint64_t seed = 1; seed <= 6; ++seed) {
-      list.push_back({"random curve " + std::to_string(seed), random_fourier_scene(seed)});
+      list.push_back({"random curve " + std::to_string(seed), curve_family_scene("random", {}, seed, 8192)});
     }
     for (int count = 2; count <= 5; ++count) {
-      list.push_back({std::to_string(count) + " disjoint curves", disjoint_curves_scene(count, 10 * count + 1)});
+      list.push_back({std::to_string(count) + " disjoint curves", curve_family_scene("disjoint", {{"count", count}}, 10 * count + 1, 4096)});
     }
     return list;
   }();

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/point.h"
+#include "generators/rose_curve.h"
 #include "voronoi/delaunay_voronoi.h"
 
 namespace curvebench::testing {
@@ -113,10 +114,7 @@ inline std::vector<Point2> star_polygon(double inner) {
 }
 
 // The point at parameter t of the rose r = 1 + 0.3 cos 5t, the benchmark's smooth curve.
-inline Point2 rose_point(double t) {
-  const double r = 1 + 0.3 * std::cos(5 * t);
-  return {r * std::cos(t), r * std::sin(t)};
-}
+inline Point2 rose_point(double t) { return curvebench::rose_point(1, 0.3, 5, t); }
 
 // n points at random positions along the rose, in order along it: counter-clockwise by
 // parameter. Fixed seed.

@@ -112,5 +112,11 @@ def test_missing_input_file_and_unknown_algorithm(run, tmp_path):
     pts = write(tmp_path, circle_text(10))
     result = run("reconstruct", "--algorithm", "nope", "--input", pts)
     assert result.returncode != 0 and "unknown algorithm 'nope'" in result.stderr
-    result = run("reconstruct", "--input", pts, "--param", "alpha=abc")
-    assert result.returncode != 0 and "not a finite number" in result.stderr
+    result = run("reconstruct", "--input", pts, "--param", "alpha=1")
+    assert result.returncode != 0 and "algorithm 'labeling' has no parameter 'alpha'" in result.stderr
+    result = run("reconstruct", "--algorithm", "alpha-shape", "--input", pts, "--param", "alpha=abc")
+    assert result.returncode != 0
+    assert "algorithm 'alpha-shape': parameter 'alpha' must be a real number >= 0" in result.stderr
+    assert "(got abc)" in result.stderr
+    result = run("reconstruct", "--algorithm", "alpha-shape", "--input", pts, "--param", "components=1.5")
+    assert result.returncode != 0 and "parameter 'components' must be a whole number >= 1" in result.stderr

@@ -1,0 +1,34 @@
+// Holes and nested curves for the incremental labeling of Peethambaran et al. (CGF 2019):
+// the paper's labels, then the regions its walks cannot reach, one nesting level at a time.
+//
+// The paper's walks start at the EVVs outside Conv(P) (Algorithm 2, line 4), so a boundary
+// with no hull bi-tangent (a hole, a curve inside another) is never reached: every vertex
+// no walk reaches is labelled inner (gap 3 of labeling/README.md) and the hole is filled.
+// Its samples show it: their whole Voronoi cell is inner (enclosed_samples.h), while on an
+// epsilon-sample each sample has poles on both sides of the curve.
+//
+// Rule, applied while such evidence exists. Level 1 is the paper's inner region. Within the
+// current region, Algorithm 1 walks from the region's frontier (walk_region_from_its_boundary.h):
+// it stays on the region's side and stops at the tangent lines (Definition 5) of the curves
+// the paper missed. What the walk does not keep splits into connected parts (through Voronoi
+// edges); a part whose boundary is a set of closed curves through enclosed samples only lies
+// across missed curves and takes the opposite label (a hole inside the shape, an island
+// inside a hole). Any other part keeps the paper's label: nothing shows a closed boundary
+// there, and relabelling it would move a curve the paper found. The flipped parts are the
+// next level's region, with its own enclosed samples. Without enclosed samples the labels
+// are the paper's, unchanged.
+//
+// In:  the Delaunay/Voronoi arrays of samples of one or more closed curves, nested or not.
+// Out: the paper's VoronoiLabels (sources and counters from label_voronoi_vertices) with
+//      `inner` relabelled as above; the curve, medial axis and dominant points are read from
+//      it by labeling/extract_shapes.h.
+#pragma once
+
+#include "labeling/label_voronoi_vertices.h"
+#include "voronoi/delaunay_voronoi.h"
+
+namespace curvebench {
+
+VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv);
+
+}  // namespace curvebench

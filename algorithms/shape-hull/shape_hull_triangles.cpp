@@ -1,0 +1,304 @@
+#include "shape-hull/shape_hull_triangles.h"
+
+#include <CGAL/Exact_rational.h>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <queue>
+
+namespace curvebench {
+namespace {
+
+using Rational = CGAL::Exact_rational;
+
+struct RationalPoint {
+  Rational x, y;
+};
+
+RationalPoint exactly(Point2 p) { return {Rational(p.x), Rational(p.y)}; }
+
+int exact_orientation(const RationalPoint& a, const RationalPoint& b, const RationalPoint& c) {
+  return CGAL::sign((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
+
+// The sign of cross(b - a, c - a) for points known only approximately, each coordinate of
+// a, b, c within error_a, error_b, error_c of the true one: +1 or -1 when the approximations
+// prove it, 0 when they cannot (then the caller decides exactly). A non-finite value never
+// proves anything.
+int filtered_orientation(Point2 a, double error_a, Point2 b, double error_b, Point2 c, double error_c) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const Point2 u = b - a, v = c - a;
+  const double left = u.x * v.y, right = u.y * v.x;
+  const double det = left - right;
+  // Moving the points changes det by cross(du, v) + cross(u, dv) + cross(du, dv); the eps
+  // term is Shewchuk's bound for the rounding of orient2d itself. Doubled to cover the
+  // rounding of the bound.
+  const double du = error_a + error_b, dv = error_a + error_c;
+  const double bound = 2 * (du * (std::abs(v.x) + std::abs(v.y)) + dv * (std::abs(u.x) + std::abs(u.y)) +
+                            2 * du * dv + 4 * eps * (std::abs(left) + std::abs(right)));
+  if (std::abs(det) > bound) return det > 0 ? 1 : -1;
+  return 0;
+}
+
+// The segment from the centroid g of a triangle to its circumcentre c (spec step 2c), and
+// the exact orientation tests a walk along it needs. The layer's circumcentres are rounded,
+// and a circumcentre exactly on an edge (a right angle; common on grids) must count as
+// inside, so each test is decided for the true g and c: in double precision when the
+// rounding errors cannot change its sign, else in rational arithmetic from the sites.
+class CentroidToCircumcentre {
+ public:
+  CentroidToCircumcentre(const DelaunayVoronoi& dv, int triangle) : dv_(dv), triangle_(triangle) {
+    constexpr double eps = std::numeric_limits<double>::epsilon();
+    const auto& tri = dv.triangles[triangle];
+    const Point2 a = dv.sites[tri[0]], b = dv.sites[tri[1]], d = dv.sites[tri[2]];
+    centroid_ = {(a.x + b.x + d.x) / 3, (a.y + b.y + d.y) / 3};
+    // Two additions and a division, each rounding by at most eps of the sum of magnitudes.
+    centroid_error_ = 2 * eps * (std::abs(a.x) + std::abs(b.x) + std::abs(d.x) + std::abs(a.y) + std::abs(b.y) + std::abs(d.y));
+    circumcentre_ = dv.circumcenters[triangle];
+    circumcentre_error_ = dv.circumcenter_errors[triangle];
+  }
+
+  // The sign of cross(to - from, c - from): >= 0 when c lies left of from -> to or on its
+  // line, i.e. not strictly beyond that edge of a counter-clockwise triangle.
+  int side_of_edge(int from, int to) {
+    const int sign = filtered_orientation(dv_.sites[from], 0, dv_.sites[to], 0, circumcentre_, circumcentre_error_);
+    if (sign != 0) return sign;
+    return exact_orientation(exactly(dv_.sites[from]), exactly(dv_.sites[to]), exact_circumcentre());
+  }
+
+  // True if the site lies left of the line from g to c. A site on that line counts as left:
+  // a symbolic perturbation of the line to the right, so that a segment through a vertex
+  // still crosses one edge at a time and every site is on one side, consistently.
+  bool left_of_segment(int site) {
+    int sign = filtered_orientation(centroid_, centroid_error_, circumcentre_, circumcentre_error_, dv_.sites[site], 0);
+    if (sign == 0) sign = exact_orientation(exact_centroid(), exact_circumcentre(), exactly(dv_.sites[site]));
+    return sign >= 0;
+  }
+
+ private:
+  const RationalPoint& exact_centroid() {
+    if (!exact_centroid_) {
+      const auto& tri = dv_.triangles[triangle_];
+      const RationalPoint a = exactly(dv_.sites[tri[0]]), b = exactly(dv_.sites[tri[1]]), d = exactly(dv_.sites[tri[2]]);
+      exact_centroid_ = RationalPoint{(a.x + b.x + d.x) / 3, (a.y + b.y + d.y) / 3};
+    }
+    return *exact_centroid_;
+  }
+
+  const RationalPoint& exact_circumcentre() {
+    if (!exact_circumcentre_) {
+      const auto& tri = dv_.triangles[triangle_];
+      const RationalPoint a = exactly(dv_.sites[tri[0]]);
+      const Rational bx = Rational(dv_.sites[tri[1]].x) - a.x, by = Rational(dv_.sites[tri[1]].y) - a.y;
+      const Rational cx = Rational(dv_.sites[tri[2]].x) - a.x, cy = Rational(dv_.sites[tri[2]].y) - a.y;
+      const Rational d = 2 * (bx * cy - by * cx);  // nonzero: Delaunay triangles are never flat
+      const Rational b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+      exact_circumcentre_ = RationalPoint{a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d};
+    }
+    return *exact_circumcentre_;
+  }
+
+  const DelaunayVoronoi& dv_;
+  int triangle_;
+  Point2 centroid_, circumcentre_;
+  double centroid_error_, circumcentre_error_;
+  std::optional<RationalPoint> exact_centroid_, exact_circumcentre_;
+};
+
+// Where the segment from the centroid of `triangle` to its circumcentre leaves it: the
+// corner opposite the edge it crosses, or kCircumcentreInside if the circumcentre lies in the
+// closed triangle (no obtuse angle). Depends on the triangle alone, not on the sculpting.
+constexpr std::uint8_t kCircumcentreInside = 3;
+
+std::uint8_t first_exit_corner(const DelaunayVoronoi& dv, int triangle) {
+  CentroidToCircumcentre segment(dv, triangle);
+  const auto& tri = dv.triangles[triangle];
+  if (segment.side_of_edge(tri[1], tri[2]) >= 0 && segment.side_of_edge(tri[2], tri[0]) >= 0 &&
+      segment.side_of_edge(tri[0], tri[1]) >= 0) {
+    return kCircumcentreInside;
+  }
+  // Now c != g, so the segment has a direction. It leaves a counter-clockwise triangle
+  // through the edge that runs from a corner right of it to a corner left of it. Exactly one
+  // edge does: g is strictly inside, so the line through g and c separates the corners.
+  bool left[3];
+  for (int i = 0; i < 3; ++i) left[i] = segment.left_of_segment(tri[i]);
+  std::uint8_t exit_corner = 0;
+  while (exit_corner < 2 && (left[(exit_corner + 1) % 3] || !left[(exit_corner + 2) % 3])) ++exit_corner;
+  return exit_corner;
+}
+
+// Everything a decision reads about one triangle, in one cache line. Sculpting takes the
+// triangles in order of circumradius, from all over the plane, so each visit would otherwise
+// miss the cache once for each of the layer's arrays it reads.
+struct alignas(64) TriangleState {
+  std::array<int, 3> corners;
+  std::array<int, 3> neighbors;
+  int rank;                     // position in the order of spec step 1
+  std::uint8_t boundary_edges;  // bit i: the outside is across the edge opposite corner i
+  std::uint8_t first_exit;      // first_exit_corner
+  bool kept;
+};
+
+// The corner of `s` opposite its edge shared with `neighbor` (two triangles share at most one).
+int corner_facing(const TriangleState& s, int neighbor) {
+  return s.neighbors[0] == neighbor ? 0 : (s.neighbors[1] == neighbor ? 1 : 2);
+}
+
+// Spec step 2c for a triangle whose circumcentre is not in it: true if the circumcentre lies
+// outside the current shape (the kept triangles). The spec recommends a straight walk over
+// the reference's CGAL locate, whose zig-zag depends on CGAL's vertex numbering: from the
+// triangle's centroid along the segment to its circumcentre, the answer is "outside" as
+// soon as the segment crosses a boundary edge, "inside" when it ends in (or on the border
+// of) a kept triangle. The walk never leaves the segment, so it terminates. The exit from
+// the first triangle is precomputed, and most walks end there.
+bool circumcentre_outside(const DelaunayVoronoi& dv, const std::vector<TriangleState>& state, int triangle) {
+  int exit_corner = state[triangle].first_exit;
+  if (state[triangle].boundary_edges >> exit_corner & 1) return true;
+  CentroidToCircumcentre segment(dv, triangle);
+  for (int current = triangle;;) {
+    const int next = state[current].neighbors[exit_corner];  // kept: the edge is not on the boundary
+    const auto& corners = state[next].corners;
+    const int entry_corner = corner_facing(state[next], current);
+    // From entry_corner, `next` is (s, q, p) with q left of the segment and p right of it:
+    // it leaves through p -> s if s is left, else through s -> q.
+    exit_corner = segment.left_of_segment(corners[entry_corner]) ? (entry_corner + 1) % 3 : (entry_corner + 2) % 3;
+    if (segment.side_of_edge(corners[(exit_corner + 1) % 3], corners[(exit_corner + 2) % 3]) >= 0) return false;
+    if (state[next].boundary_edges >> exit_corner & 1) return true;
+    current = next;
+  }
+}
+
+// The order of spec step 1: the triangles by decreasing circumradius. The reference leaves
+// equal radii in heap order; here the smaller triangle index goes first, so that the result
+// is deterministic. Radii are the layer's rounded ones, as the reference's are its own
+// rounded ones. A stable least-significant-digit radix sort on the radius's bits, from
+// triangles in index order: non-negative doubles order like their bit patterns, and
+// complemented the largest comes first.
+std::vector<int> triangles_by_decreasing_circumradius(const DelaunayVoronoi& dv) {
+  struct Keyed {
+    std::uint64_t key;
+    int triangle;
+  };
+  const int count = dv.triangle_count();
+  std::vector<Keyed> items(count), buffer(count);
+  for (int t = 0; t < count; ++t) items[t] = {~std::bit_cast<std::uint64_t>(dv.circumradii[t]), t};
+  constexpr int kDigitBits = 16;
+  constexpr std::uint64_t kDigitMask = (1u << kDigitBits) - 1;
+  std::vector<int> start(kDigitMask + 2);
+  for (int shift = 0; shift < 64; shift += kDigitBits) {
+    std::fill(start.begin(), start.end(), 0);
+    for (const auto& item : items) ++start[((item.key >> shift) & kDigitMask) + 1];
+    // Radii of one scale share their sign and exponent bits: such a digit moves nothing.
+    if (*std::max_element(start.begin(), start.end()) == count) continue;
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    for (const auto& item : items) buffer[start[(item.key >> shift) & kDigitMask]++] = item;
+    items.swap(buffer);
+  }
+  std::vector<int> order(count);
+  for (int i = 0; i < count; ++i) order[i] = items[i].triangle;
+  return order;
+}
+
+// The queue of spec steps 1-3, over ranks in that order, smallest first. It does what a
+// binary heap does, without the heap's cache misses: at 10^6 points the heap holds hundreds
+// of thousands of entries and every pop would walk it from top to bottom. Ranks not yet
+// reached are bits above a cursor that only moves forward, so finding the next one is a
+// single sweep over all the bits. A triangle pushed after the cursor passed its rank (its
+// radius exceeds that of the triangle just removed) waits in a small heap instead, whose
+// ranks, all below the cursor, pop first. A rank pushed twice before it pops comes out
+// once: the reference's second pop finds the triangle dangling and changes nothing.
+class RankQueue {
+ public:
+  explicit RankQueue(int size) : bits_((static_cast<std::size_t>(size) + 63) / 64, 0) {}
+
+  void push(int rank) {
+    if (rank >= cursor_) {
+      bits_[rank >> 6] |= std::uint64_t{1} << (rank & 63);
+    } else {
+      passed_.push(rank);
+    }
+  }
+
+  // The smallest rank in the queue, taken out, or -1 if the queue is empty.
+  int pop() {
+    if (!passed_.empty()) {
+      const int rank = passed_.top();
+      passed_.pop();
+      return rank;
+    }
+    // Bits below the cursor are all clear: popped, and later pushes go to passed_.
+    for (std::size_t word = static_cast<std::size_t>(cursor_) >> 6; word < bits_.size(); ++word) {
+      if (bits_[word] == 0) continue;
+      const int rank = static_cast<int>(word * 64) + std::countr_zero(bits_[word]);
+      bits_[word] &= bits_[word] - 1;
+      cursor_ = rank + 1;
+      return rank;
+    }
+    return -1;
+  }
+
+ private:
+  std::vector<std::uint64_t> bits_;
+  int cursor_ = 0;
+  std::priority_queue<int, std::vector<int>, std::greater<int>> passed_;
+};
+
+}  // namespace
+
+std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
+  if (dv.dimension != 2) return {};
+  const int triangle_count = dv.triangle_count();
+  const std::vector<int> triangle_of_rank = triangles_by_decreasing_circumradius(dv);
+  std::vector<TriangleState> state(triangle_count);
+  for (int t = 0; t < triangle_count; ++t) {
+    auto& s = state[t];
+    s.corners = dv.triangles[t];
+    s.neighbors = dv.neighbors[t];
+    s.boundary_edges = 0;
+    for (int i = 0; i < 3; ++i) s.boundary_edges |= (s.neighbors[i] == kInfinite) << i;
+    s.first_exit = first_exit_corner(dv, t);
+    s.kept = true;
+  }
+  for (int rank = 0; rank < triangle_count; ++rank) state[triangle_of_rank[rank]].rank = rank;
+  // Sites touching the outside: at first the hull sites, including those inside hull edges.
+  std::vector<std::uint8_t> on_boundary(dv.on_hull.begin(), dv.on_hull.end());
+
+  RankQueue queue(triangle_count);
+  for (int t = 0; t < triangle_count; ++t) {  // spec step 1: each triangle with a hull edge, once
+    if (state[t].boundary_edges) queue.push(state[t].rank);
+  }
+
+  for (int rank; (rank = queue.pop()) >= 0;) {
+    const int t = triangle_of_rank[rank];
+    // A popped triangle is always kept: it is removed only at a pop where it has one boundary
+    // edge, and it has at most one queue entry per boundary edge, so none is left behind.
+    auto& s = state[t];
+    // Spec step 2 tests the circumcentre first; here the tests go cheapest first, which
+    // changes no outcome (all three must hold).
+    if (std::popcount(s.boundary_edges) != 1) continue;   // rule a: dangling
+    if (s.first_exit == kCircumcentreInside) continue;     // rule c, circumcentre in t
+    const int boundary_corner = std::countr_zero(s.boundary_edges);
+    const int apex = s.corners[boundary_corner];
+    if (on_boundary[apex]) continue;                     // rule b: junction
+    if (!circumcentre_outside(dv, state, t)) continue;   // rule c
+    s.kept = false;  // spec step 3
+    on_boundary[apex] = 1;
+    for (int corner = 0; corner < 3; ++corner) {
+      if (corner == boundary_corner) continue;
+      auto& other = state[s.neighbors[corner]];
+      other.boundary_edges |= 1 << corner_facing(other, t);
+      queue.push(other.rank);
+    }
+  }
+  std::vector<std::uint8_t> kept(triangle_count);
+  for (int t = 0; t < triangle_count; ++t) kept[t] = state[t].kept;
+  return kept;
+}
+
+}  // namespace curvebench

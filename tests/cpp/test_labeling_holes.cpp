@@ -1,0 +1,195 @@
+// labeling-holes: the paper's labeler extended to holes and nested curves. On nested curves
+// and shapes with holes every curve comes out as its own closed polygon, with the interior
+// medial axis between the outer curve and its holes and a hole's corners among the dominant
+// points; where no boundary is missed the output is the paper's, edge for edge.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+#include <vector>
+
+#include "baseline_families.h"
+#include "core/registry.h"
+#include "generators/closed_curves.h"
+#include "generators/samplers.h"
+#include "test_support.h"
+
+namespace curvebench {
+namespace {
+
+using testing::cyclic_distance;
+using testing::sample_polygon_evenly;
+using testing::sorted;
+
+Reconstruction run(const char* algorithm, const std::vector<Point2>& points) {
+  return find_algorithm(algorithm).reconstruct(points, {});
+}
+
+// An ellipse with semi-axes a, b around `centre`, counter-clockwise, `n` vertices.
+std::vector<Point2> ellipse_ring(Point2 centre, double a, double b, int n) {
+  std::vector<Point2> ring;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * std::numbers::pi * k / n;
+    ring.push_back(centre + Point2{a * std::cos(t), b * std::sin(t)});
+  }
+  return ring;
+}
+
+// Even-odd containment in a polygon.
+bool inside(const std::vector<Point2>& polygon, Point2 q) {
+  bool in = false;
+  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Point2 a = polygon[i], b = polygon[j];
+    if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
+  }
+  return in;
+}
+
+// A 3 x 2 ellipse with two elliptic holes and a third, round one: a shape with three holes.
+Scene three_hole_scene() {
+  return polygon_scene("three holes", {ellipse_ring({0, 0}, 3, 2, 2000), ellipse_ring({-1.5, 0.2}, 0.6, 0.4, 800),
+                                       ellipse_ring({0.6, -0.6}, 0.5, 0.5, 800), ellipse_ring({1.6, 0.7}, 0.4, 0.3, 800)});
+}
+
+int axis_components(const MedialAxis& axis) {
+  std::vector<int> parent(axis.vertices.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  };
+  int components = static_cast<int>(axis.vertices.size());
+  for (const Edge& e : axis.edges) {
+    const int a = root(e[0]), b = root(e[1]);
+    if (a != b) {
+      parent[a] = b;
+      --components;
+    }
+  }
+  return components;
+}
+
+void expect_exact(const char* algorithm, const Scene& scene, double epsilon, std::uint64_t seed) {
+  const SampledScene samples = epsilon_sample(scene, epsilon, seed);
+  ASSERT_LE(achieved_epsilon(scene, samples), epsilon) << scene.name << ": not an epsilon-sample";
+  EXPECT_EQ(sorted(*run(algorithm, samples.points).curve_edges), sorted(samples.true_edges))
+      << algorithm << " on " << scene.name << ", epsilon " << epsilon << ", seed " << seed;
+}
+
+TEST(LabelingHoles, NestedCurvesAreTwoClosedCurves) {
+  for (std::uint64_t shape = 1; shape <= 6; ++shape) {
+    const Scene scene = nested_curves_scene(shape);
+    for (double epsilon : {0.1, 0.2, 0.3}) expect_exact("labeling-holes", scene, epsilon, shape);
+  }
+}
+
+TEST(LabelingHoles, ThePaperFillsTheInnerCurveOfNestedCurves) {
+  const SampledScene samples = epsilon_sample(nested_curves_scene(1), 0.2, 1);
+  const auto paper = run("labeling", samples.points);
+  EXPECT_NE(sorted(*paper.curve_edges), sorted(samples.true_edges)) << "the case this extension exists for";
+}
+
+TEST(LabelingHoles, ShapeWithThreeHolesIsFourClosedCurves) {
+  const Scene scene = three_hole_scene();
+  for (double epsilon : {0.1, 0.2, 0.3}) {
+    for (std::uint64_t seed = 1; seed <= 3; ++seed) expect_exact("labeling-holes", scene, epsilon, seed);
+  }
+}
+
+TEST(LabelingHoles, InteriorMedialAxisLiesBetweenTheOuterCurveAndTheHoles) {
+  const Scene scene = three_hole_scene();
+  const SampledScene samples = epsilon_sample(scene, 0.2, 4);
+  const auto result = run("labeling-holes", samples.points);
+  ASSERT_EQ(sorted(*result.curve_edges), sorted(samples.true_edges));
+  const MedialAxis& axis = *result.medial_axis;
+  for (const Point2& v : axis.vertices) {
+    ASSERT_TRUE(inside(scene.curves[0].points, v)) << "medial-axis vertex outside the shape";
+    for (std::size_t hole = 1; hole < scene.curves.size(); ++hole) {
+      ASSERT_FALSE(inside(scene.curves[hole].points, v)) << "medial-axis vertex inside hole " << hole;
+    }
+  }
+  // The axis is a deformation retract of the shape: one piece, one independent cycle per hole.
+  EXPECT_EQ(axis_components(axis), 1);
+  EXPECT_EQ(axis.edges.size() - axis.vertices.size() + 1, scene.curves.size() - 1);
+}
+
+TEST(LabelingHoles, IslandInsideAHoleIsItsOwnCurveAndPartOfTheShape) {
+  // Three nested ellipses: the shape is the outer ring plus the island in its hole.
+  const Scene scene = polygon_scene("island", {ellipse_ring({0, 0}, 3, 2, 2000), ellipse_ring({0.1, 0}, 2, 1.2, 1500),
+                                               ellipse_ring({0.2, 0.1}, 1, 0.5, 1000)});
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const SampledScene samples = epsilon_sample(scene, 0.2, seed);
+    const auto result = run("labeling-holes", samples.points);
+    EXPECT_EQ(sorted(*result.curve_edges), sorted(samples.true_edges)) << "seed " << seed;
+    bool axis_in_island = false;
+    for (const Point2& v : result.medial_axis->vertices) {
+      EXPECT_FALSE(inside(scene.curves[1].points, v) && !inside(scene.curves[2].points, v))
+          << "medial-axis vertex in the hole around the island";
+      axis_in_island = axis_in_island || inside(scene.curves[2].points, v);
+    }
+    EXPECT_TRUE(axis_in_island) << "seed " << seed;
+    // The ring around the hole and the island: two pieces, one cycle between them.
+    const MedialAxis& axis = *result.medial_axis;
+    EXPECT_EQ(axis_components(axis), 2) << "seed " << seed;
+    EXPECT_EQ(axis.edges.size() + 2, axis.vertices.size() + 1) << "seed " << seed;
+  }
+}
+
+TEST(LabelingHoles, HoleCornersAreDominantPoints) {
+  // A 2 x 2 square with a 1 x 1 square hole, both sampled evenly (hole clockwise or not:
+  // orientation is no input).
+  const int outer = 200, hole = 100;
+  std::vector<Point2> points = sample_polygon_evenly({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, outer);
+  for (const Point2& p : sample_polygon_evenly({{0.5, 0.5}, {1.5, 0.5}, {1.5, 1.5}, {0.5, 1.5}}, hole)) points.push_back(p);
+  const auto result = run("labeling-holes", points);
+  std::vector<Edge> expected = testing::cycle_edges(outer);
+  for (const Edge& e : testing::cycle_edges(hole, outer)) expected.push_back(e);
+  ASSERT_EQ(sorted(*result.curve_edges), sorted(expected));
+  const auto& dominant = *result.dominant_points;
+  auto near = [&](int corner, int first, int n) {
+    return std::any_of(dominant.begin(), dominant.end(),
+                       [&](int dp) { return dp >= first && dp < first + n && cyclic_distance(dp - first, corner, n) <= 2; });
+  };
+  for (int corner = 0; corner < outer; corner += outer / 4) EXPECT_TRUE(near(corner, 0, outer)) << "outer corner " << corner;
+  for (int corner = 0; corner < hole; corner += hole / 4) EXPECT_TRUE(near(corner, outer, hole)) << "hole corner " << corner;
+  for (int dp : dominant) {
+    const int along = dp < outer ? dp % (outer / 4) : (dp - outer) % (hole / 4);
+    const int side = dp < outer ? outer / 4 : hole / 4;
+    EXPECT_LE(std::min(along, side - along), 2) << "dominant point " << dp << " away from every corner";
+  }
+}
+
+// Where the paper's walks reach every curve, the extension must not change a thing.
+void expect_same_as_the_paper(const std::vector<Point2>& points, const std::string& what) {
+  const auto paper = run("labeling", points);
+  const auto extended = run("labeling-holes", points);
+  EXPECT_EQ(sorted(*extended.curve_edges), sorted(*paper.curve_edges)) << what;
+  EXPECT_EQ(*extended.dominant_points, *paper.dominant_points) << what;
+  EXPECT_EQ(extended.medial_axis->vertices, paper.medial_axis->vertices) << what;
+  EXPECT_EQ(extended.medial_axis->edges, paper.medial_axis->edges) << what;
+}
+
+TEST(LabelingHoles, SameAsThePaperOnEpsilonSamplesOfCurvesWithoutHoles) {
+  for (const auto& family : testing::curve_families()) {
+    for (double epsilon : {0.1, 0.3, 0.5}) {
+      for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+        expect_same_as_the_paper(epsilon_sample(family.scene, epsilon, seed).points,
+                                 family.name + " epsilon " + std::to_string(epsilon));
+      }
+    }
+  }
+}
+
+TEST(LabelingHoles, SameAsThePaperOnSharpCorners) {
+  expect_same_as_the_paper(sample_polygon_evenly(testing::star_polygon(0.6), 200), "star");
+  expect_same_as_the_paper(sample_polygon_evenly({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 200), "square");
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    expect_same_as_the_paper(arc_length_sample(l_shape_scene(0.6), 120, true, seed).points, "L shape");
+    expect_same_as_the_paper(arc_length_sample(star_scene(5, 0.45), 80, true, seed).points, "star, 80 random samples");
+  }
+}
+
+}  // namespace
+}  // namespace curvebench

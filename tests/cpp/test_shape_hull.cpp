@@ -1,0 +1,233 @@
+// Shape-hull (Peethambaran, Muthuganapathy 2015): the behaviour the spec states on simple
+// sets (exact circles, roses and stars; two circles bridged into one polygon; open arcs
+// closed by a chord; only an outer boundary on uniform points), its three sculpting rules on
+// hand-made cases, and its claims on any input: one simple closed polygon through every hull
+// site, every Gabriel edge kept in the shape-hull graph.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <numbers>
+#include <random>
+#include <set>
+
+#include "shape-hull/shape_hull_edges.h"
+#include "shape-hull/shape_hull_triangles.h"
+#include "test_support.h"
+
+namespace curvebench {
+namespace {
+
+using testing::cycle_edges;
+using testing::sorted;
+
+// The shape-hull of `points` in input indices.
+std::vector<Edge> shape_hull_of(const std::vector<Point2>& points) {
+  const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+  return sorted(testing::to_input_indices(dv, shape_hull_edges(dv)));
+}
+
+// The number of vertices of the polygon if `edges` form exactly one closed polygon (every
+// endpoint of degree 2, all connected), else 0.
+int closed_polygon_size(const std::vector<Edge>& edges) {
+  std::map<int, std::vector<int>> around;
+  for (const auto& [a, b] : edges) around[a].push_back(b), around[b].push_back(a);
+  for (const auto& [vertex, others] : around) {
+    if (others.size() != 2) return 0;
+  }
+  if (around.empty()) return 0;
+  int previous = -1, current = around.begin()->first, visited = 0;
+  do {
+    const auto& others = around[current];
+    const int next = others[0] != previous ? others[0] : others[1];
+    previous = current, current = next, ++visited;
+  } while (current != around.begin()->first && visited <= static_cast<int>(around.size()));
+  return visited == static_cast<int>(around.size()) ? visited : 0;
+}
+
+std::vector<Point2> random_angle_circle(int n, unsigned seed, Point2 center = {0, 0}, double radius = 1) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi);
+  std::vector<double> t(n);
+  for (double& value : t) value = angle(rng);
+  std::sort(t.begin(), t.end());
+  std::vector<Point2> points;
+  for (double value : t) points.push_back(center + radius * Point2{std::cos(value), std::sin(value)});
+  return points;
+}
+
+TEST(ShapeHull, CircleAndRoseWithRandomAnglesAreTheExactPolygon) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    EXPECT_EQ(shape_hull_of(random_angle_circle(120, seed)), cycle_edges(120)) << "circle, seed " << seed;
+    EXPECT_EQ(shape_hull_of(testing::rose_in_curve_order(120, seed)), cycle_edges(120)) << "rose, seed " << seed;
+  }
+}
+
+TEST(ShapeHull, CocircularCirclesAreThePolygon) {
+  // Every circumcentre is the centre of the circle, inside the shape: nothing is removed.
+  EXPECT_EQ(shape_hull_of(testing::uniform_circle(50)), cycle_edges(50));
+  EXPECT_EQ(shape_hull_of(testing::lattice_circle(5525)), cycle_edges(180));
+}
+
+TEST(ShapeHull, StarSampledAlongItsBoundaryKeepsEveryTip) {
+  // The spec's sparse star, where HNN-crust, Crawl and Peel miss tips: 10 corners, inner
+  // radius 0.45, sampled evenly with every corner among the samples.
+  for (int n : {120, 130, 140}) {
+    EXPECT_EQ(shape_hull_of(testing::sample_polygon_evenly(testing::star_polygon(0.45), n)), cycle_edges(n)) << n;
+  }
+}
+
+TEST(ShapeHull, TwoDisjointCirclesBecomeOnePolygonJoinedByTwoBridges) {
+  // Rule b keeps the shape one disk: the triangles in the gap between the circles would split
+  // it, so two of them stay and their long edges bridge the circles. Samples between the
+  // bridge ends on the arcs that face each other are inside the polygon and get no edges
+  // (how many depends on the gap: here 0.5 between unit circles).
+  for (unsigned seed : {1u, 2u, 3u}) {
+    auto points = random_angle_circle(60, seed);
+    const auto right = random_angle_circle(60, seed + 100, {2.5, 0});
+    points.insert(points.end(), right.begin(), right.end());
+    const auto edges = shape_hull_of(points);
+    ASSERT_GT(closed_polygon_size(edges), 0) << seed;
+    int bridges = 0;
+    std::set<int> on_polygon;
+    for (const auto& [a, b] : edges) {
+      on_polygon.insert(a), on_polygon.insert(b);
+      if ((a < 60) != (b < 60)) {
+        ++bridges;
+        continue;
+      }
+      // Within a circle, only neighbours along it (the left circle is 0..59, the right 60..119).
+      EXPECT_EQ(testing::cyclic_distance(a % 60, b % 60, 60), 1) << seed;
+    }
+    EXPECT_EQ(bridges, 2) << seed;
+    for (int i = 0; i < 120; ++i) {
+      if (on_polygon.count(i)) continue;
+      EXPECT_TRUE(i < 60 ? points[i].x > 0.5 : points[i].x < 2.0) << "seed " << seed << ", sample " << i;
+    }
+  }
+}
+
+TEST(ShapeHull, OpenArcIsClosedByOneChord) {
+  for (double degrees : {90.0, 180.0, 270.0}) {
+    const int n = 120;
+    std::vector<Point2> points;
+    for (int k = 0; k < n; ++k) {
+      const double t = degrees * std::numbers::pi / 180 * k / (n - 1);
+      points.push_back({std::cos(t), std::sin(t)});
+    }
+    std::vector<Edge> path_and_chord;
+    for (int k = 0; k + 1 < n; ++k) path_and_chord.push_back({k, k + 1});
+    path_and_chord.push_back({0, n - 1});
+    EXPECT_EQ(shape_hull_of(points), sorted(path_and_chord)) << degrees;
+  }
+}
+
+// Every site on the convex hull is a vertex of the polygon, and the polygon is the only one.
+void expect_one_polygon_through_the_hull(const std::vector<Point2>& points, const std::string& name) {
+  const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+  const auto edges = shape_hull_edges(dv);
+  const int size = closed_polygon_size(edges);
+  ASSERT_GT(size, 0) << name;
+  std::set<int> on_polygon;
+  for (const auto& [a, b] : edges) on_polygon.insert(a), on_polygon.insert(b);
+  for (int site : dv.hull) EXPECT_TRUE(on_polygon.count(site)) << name << ": hull site " << site;
+}
+
+TEST(ShapeHull, UniformPointsGiveOnlyAnOuterBoundary) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> coordinate(0, 1);
+  std::vector<Point2> points(400);
+  for (auto& p : points) p = {coordinate(rng), coordinate(rng)};
+  expect_one_polygon_through_the_hull(points, "uniform");
+  const int size = closed_polygon_size(shape_hull_of(points));
+  EXPECT_LT(size, 300) << "interior points stay isolated";
+}
+
+TEST(ShapeHull, NoisyRoseIsOneClosedPolygon) {
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0, 0.02);
+  auto points = testing::rose_in_curve_order(120, 5);
+  for (auto& p : points) p = p + Point2{noise(rng), noise(rng)};
+  const int size = closed_polygon_size(shape_hull_of(points));
+  EXPECT_GE(size, 100);
+  EXPECT_LE(size, 120);
+}
+
+TEST(ShapeHull, AlwaysOneSimpleClosedPolygonThroughTheHull) {
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::normal_distribution<double> spread(0, 0.01);
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<Point2> clustered, grid;
+    for (int k = 0; k < 150; ++k) {
+      const Point2 cluster{static_cast<double>(k % 3), static_cast<double>(k % 2)};
+      clustered.push_back(cluster + Point2{spread(rng), spread(rng)});
+    }
+    // Integer points: many right angles, so circumcentres exactly on edges.
+    for (int k = 0; k < 150; ++k) grid.push_back({std::floor(20 * unit(rng)), std::floor(20 * unit(rng))});
+    std::sort(grid.begin(), grid.end(), [](Point2 a, Point2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+    expect_one_polygon_through_the_hull(clustered, "clustered " + std::to_string(trial));
+    expect_one_polygon_through_the_hull(grid, "grid " + std::to_string(trial));
+  }
+}
+
+TEST(ShapeHull, GraphKeepsEveryGabrielEdge) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(-1, 1);
+  std::vector<Point2> points(200);
+  for (auto& p : points) p = {unit(rng), unit(rng)};
+  const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+  const auto kept = shape_hull_triangles(dv);
+  std::set<Edge> graph;
+  for (int t = 0; t < dv.triangle_count(); ++t) {
+    for (int i = 0; kept[t] && i < 3; ++i) graph.insert(make_edge(dv.triangles[t][i], dv.triangles[t][(i + 1) % 3]));
+  }
+  int gabriel_edges = 0;
+  for (int a = 0; a < dv.site_count(); ++a) {
+    for (int b = a + 1; b < dv.site_count(); ++b) {
+      const Point2 mid = 0.5 * (dv.sites[a] + dv.sites[b]);
+      const double radius = distance(dv.sites[a], mid);
+      bool empty = true;
+      for (int s = 0; s < dv.site_count() && empty; ++s) empty = s == a || s == b || distance(dv.sites[s], mid) >= radius;
+      if (!empty) continue;
+      ++gabriel_edges;
+      EXPECT_TRUE(graph.count({a, b})) << a << " " << b;
+    }
+  }
+  EXPECT_GT(gabriel_edges, 200);
+}
+
+TEST(ShapeHull, RemovesABoundaryTriangleExactlyWhenItsCircumcentreIsOutside) {
+  // A square around a fifth point. At the centre, each triangle has its right angle there,
+  // so its circumcentre is the midpoint of its hull edge: on the border, which counts as inside.
+  const std::vector<Point2> square{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+  auto centred = square;
+  centred.push_back({0, 0});
+  EXPECT_EQ(shape_hull_of(centred), cycle_edges(4));
+  // Moved up, the top triangle is obtuse at the fifth point: its circumcentre is beyond the
+  // top edge, so it goes and the fifth point joins the boundary. The two side triangles then
+  // have two boundary edges (dangling) and stay.
+  auto raised = square;
+  raised.push_back({0, 0.1});
+  EXPECT_EQ(shape_hull_of(raised), sorted({{0, 1}, {1, 2}, {2, 4}, {3, 4}, {0, 3}}));
+}
+
+TEST(ShapeHull, KeepsAJunctionTriangle) {
+  // Two triangles' worth of points joined at the narrow waist of an hourglass: the waist
+  // triangle's circumcentre is outside, but removing it would cut the shape in two.
+  const std::vector<Point2> hourglass{{-3, -1}, {-3, 1}, {-0.2, 0}, {0.2, 0.05}, {3, -1}, {3, 1}};
+  const auto edges = shape_hull_of(hourglass);
+  EXPECT_EQ(closed_polygon_size(edges), 6);
+}
+
+TEST(ShapeHull, ThreePointsAreTheTriangleAndFewerOrCollinearGiveNoEdges) {
+  EXPECT_EQ(shape_hull_of({{0, 0}, {1, 0}, {0.3, 2}}), cycle_edges(3));
+  EXPECT_TRUE(shape_hull_of({{0, 0}, {1, 0}}).empty());
+  EXPECT_TRUE(shape_hull_of({{0, 0}}).empty());
+  EXPECT_TRUE(shape_hull_of({}).empty());
+  EXPECT_TRUE(shape_hull_of({{0, 0}, {1, 1}, {2, 2}, {3, 3}}).empty());
+  EXPECT_TRUE(shape_hull_triangles(build_delaunay_voronoi(std::vector<Point2>{{0, 0}, {1, 1}, {2, 2}})).empty());
+}
+
+}  // namespace
+}  // namespace curvebench

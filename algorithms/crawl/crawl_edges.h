@@ -1,5 +1,5 @@
 // Crawl through Neighbors (Parakkat, Muthuganapathy; Computer Graphics Forum 35(5), SGP 2016),
-// as specified in /work/shared/methods/crawl.md, with the spec's sound choices (section 3).
+// as specified in specification.md, with the spec's sound choices (section 3).
 //
 // In:  the Delaunay/Voronoi arrays of distinct sites. Dimension 2 is the method's input;
 //      below it (collinear sites, fewer than 3 sites) see the last paragraph.

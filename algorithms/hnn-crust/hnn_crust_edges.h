@@ -1,6 +1,6 @@
 // The HNN-crust ("half-neighbour" NN-crust) of Ohrhallinger, Mitchell and Wimmer, "Curve
 // Reconstruction with Many Fewer Samples" (Computer Graphics Forum 35(5), SGP 2016), as the
-// authors' reference code computes it (spec: /work/shared/methods/hnn-crust.md).
+// authors' reference code computes it (spec: specification.md).
 //
 // In:  distinct sites (any order) and k_max, the size of each site's neighbourhood counted
 //      with the site itself (the reference hard-codes 15).

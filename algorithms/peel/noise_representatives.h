@@ -1,6 +1,6 @@
 // The noise-removal step of Peeling the Longest (Parakkat, Methirumangalath, Muthuganapathy,
 // Computers & Graphics 74, 2018; the authors' separate Noise_Removal program; spec
-// /work/shared/methods/peel.md, "Noise removal"). It reduces a noisy point set, which is then
+// specification.md, "Noise removal"). It reduces a noisy point set, which is then
 // triangulated afresh and peeled (peel_edges.h).
 //
 // In:  the Delaunay/Voronoi arrays of the samples; `radius` > 0, the authors' tau.

@@ -1,6 +1,6 @@
 // Peeling the Longest: A. D. Parakkat, S. Methirumangalath, R. Muthuganapathy, "Peeling the
 // longest: A simple generalized curve reconstruction algorithm", Computers & Graphics 74
-// (2018), Proc. SMI 2018; spec /work/shared/methods/peel.md, section 2.
+// (2018), Proc. SMI 2018; spec specification.md, section 2.
 //
 // In:  the Delaunay/Voronoi arrays of the samples (below dimension 2 there is no triangle and
 //      the result is empty); `len` >= 0, the reconnection factor (0: no reconnection);

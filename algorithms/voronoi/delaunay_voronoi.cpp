@@ -25,8 +25,8 @@ namespace cgal {
 // along a Hilbert curve) comparing the points they index; here the pairs themselves are
 // sorted, then each is inserted from the face of the one before. The result is the same
 // triangulation, built faster at large n because the sort reads contiguous memory (see
-// harness/bench/README.md). Inserting a point equal to an earlier one returns the earlier vertex, whose index is
-// then replaced unless the new one is negative.
+// harness/bench/README.md). Inserting a point equal to an earlier one returns the earlier
+// vertex, whose index is then replaced unless the new one is negative.
 void insert_in_spatial_order(Delaunay& dt, IndexedPoints& indexed) {
   using Traits = CGAL::Spatial_sort_traits_adapter_2<Kernel, CGAL::First_of_pair_property_map<IndexedPoints::value_type>>;
   CGAL::spatial_sort(indexed.begin(), indexed.end(), Traits());

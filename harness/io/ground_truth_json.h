@@ -1,5 +1,5 @@
-// The ground-truth JSON of DESIGN.md ("File formats"): what `curvebench generate --truth`
-// writes beside the points file and `curvebench evaluate` reads.
+// The ground-truth JSON (harness/README.md, "Data flow and file formats"): what
+// `curvebench generate --truth` writes beside the points file and `curvebench evaluate` reads.
 //
 // {"format": "curvebench-ground-truth/1",
 //  "generator": {"family": "rose", "epsilon": 0.2, "seed": 3, ...every setting},

@@ -1,5 +1,5 @@
-// The reconstruction JSON of DESIGN.md ("File formats"): what `curvebench reconstruct
-// --output` writes and `curvebench evaluate` reads.
+// The reconstruction JSON (harness/README.md, "Data flow and file formats"): what
+// `curvebench reconstruct --output` writes and `curvebench evaluate` reads.
 #pragma once
 
 #include <nlohmann/json.hpp>

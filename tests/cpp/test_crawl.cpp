@@ -1,4 +1,4 @@
-// Crawl through Neighbors (spec /work/shared/methods/crawl.md): the behaviour section 4 of the
+// Crawl through Neighbors (spec algorithms/crawl/specification.md): the behaviour section 4 of the
 // spec describes on circles, a star, two circles and open arcs; the closure rule (cycles of
 // at least 6 sites, one end the other's second-nearest neighbour); no phantom at the origin;
 // degrees <= 2 and Delaunay edges only; the steps read literally; fewer than 3 sites.

@@ -1,5 +1,5 @@
 // The HNN-crust (Ohrhallinger, Mitchell, Wimmer, SGP 2016) against its spec
-// (/work/shared/methods/hnn-crust.md): exact closed polygons and open paths, the k_max cap on
+// (algorithms/hnn-crust/specification.md): exact closed polygons and open paths, the k_max cap on
 // arcs, mutual choices only, degrees at most two, the strict bisector test, tiny inputs.
 #include <gtest/gtest.h>
 

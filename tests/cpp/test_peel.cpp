@@ -1,4 +1,4 @@
-// Peeling the Longest (Parakkat et al. 2018; spec /work/shared/methods/peel.md): the peel and
+// Peeling the Longest (Parakkat et al. 2018; spec algorithms/peel/specification.md): the peel and
 // its symmetric degree filter against a direct transcription of the spec, the behaviour the
 // spec reports on circles, a star, two circles and open arcs, reconnection of loose ends, the
 // noise-removal step, and inputs too small to peel.

@@ -1,4 +1,4 @@
-// The points-file format of DESIGN.md: separators, comments, line ends, and one-line errors
+// The points-file format (harness/README.md): separators, comments, line ends, and one-line errors
 // that name the file and the line.
 #include <gtest/gtest.h>
 

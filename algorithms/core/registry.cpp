@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace curvebench {
 namespace {
@@ -12,6 +13,23 @@ std::vector<std::unique_ptr<Algorithm>>& registered() {
   static std::vector<std::unique_ptr<Algorithm>> algorithms;
   return algorithms;
 }
+
+class DelaunayCurveAlgorithm final : public Algorithm {
+ public:
+  DelaunayCurveAlgorithm(std::string name, std::string citation, DelaunayEdgeFunction edges)
+      : info_{std::move(name), std::move(citation), kCurve, {}, SiteInput::kDelaunay}, edges_(edges) {}
+  const AlgorithmInfo& info() const override { return info_; }
+  SiteResult run(const Sites& sites, const ParameterValues&, PhaseTimer& timer) const override {
+    SiteResult result;
+    result.curve_edges = edges_(*sites.delaunay);
+    timer.lap(info_.name);
+    return result;
+  }
+
+ private:
+  AlgorithmInfo info_;
+  DelaunayEdgeFunction edges_;
+};
 
 bool valid_name(const std::string& name) {
   if (name.empty() || name.front() == '-' || name.back() == '-') return false;
@@ -29,6 +47,10 @@ bool register_algorithm(std::unique_ptr<Algorithm> algorithm) {
   }
   list.push_back(std::move(algorithm));
   return true;
+}
+
+bool register_delaunay_curve_algorithm(std::string name, std::string citation, DelaunayEdgeFunction edges) {
+  return register_algorithm(std::make_unique<DelaunayCurveAlgorithm>(std::move(name), std::move(citation), edges));
 }
 
 std::vector<const Algorithm*> all_algorithms() {

@@ -1,6 +1,7 @@
 #include "labeling-holes/walk_region_from_its_boundary.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "labeling/label_voronoi_vertices.h"
 #include "labeling/side_of_tangent_line.h"
@@ -43,13 +44,11 @@ std::vector<std::uint8_t> walk_region_from_its_boundary(const DelaunayVoronoi& d
     return false;
   };
   for (int root : seeds) {
-    if (visited[root]) continue;
-    stack.push_back(root);
+    stack.assign(1, root);
     while (!stack.empty()) {
       const int vertex = stack.back();
       stack.pop_back();
-      if (visited[vertex]) continue;
-      visited[vertex] = 1;
+      if (std::exchange(visited[vertex], std::uint8_t{1})) continue;  // reached by an earlier branch
       // Gap 2 of labeling/README.md: a stopped vertex ends its branch.
       if (!is_seed[vertex] && crosses_a_tangent_line(vertex)) continue;
       kept[vertex] = 1;

@@ -44,4 +44,13 @@ MedialAxis extract_interior_medial_axis(const DelaunayVoronoi& dv, const Voronoi
   return voronoi_subgraph(dv, labels.inner, [](int, int) { return true; });
 }
 
+SiteResult shapes_from_labels(const DelaunayVoronoi& dv, const VoronoiLabels& labels) {
+  SiteResult result;
+  auto [curve, dominant] = extract_curve_and_dominant_points(dv, labels);
+  result.curve_edges = std::move(curve);
+  result.dominant_points = std::move(dominant);
+  result.medial_axis = extract_interior_medial_axis(dv, labels);
+  return result;
+}
+
 }  // namespace curvebench

@@ -13,6 +13,7 @@
 
 #include <vector>
 
+#include "core/algorithm.h"
 #include "core/reconstruction.h"
 #include "labeling/label_voronoi_vertices.h"
 
@@ -26,5 +27,8 @@ struct CurveAndDominantPoints {
 CurveAndDominantPoints extract_curve_and_dominant_points(const DelaunayVoronoi& dv, const VoronoiLabels& labels);
 
 MedialAxis extract_interior_medial_axis(const DelaunayVoronoi& dv, const VoronoiLabels& labels);
+
+// All three, as the result of a labeling algorithm's run().
+SiteResult shapes_from_labels(const DelaunayVoronoi& dv, const VoronoiLabels& labels);
 
 }  // namespace curvebench

@@ -67,7 +67,7 @@ void run(const EvaluateOptions& options) {
 
 void add_evaluate_command(CLI::App& app) {
   auto options = std::make_shared<EvaluateOptions>();
-  auto* cmd = app.add_subcommand("evaluate", "Score a reconstruction against its ground truth (metrics: README.md, "Metrics")");
+  auto* cmd = app.add_subcommand("evaluate", "Score a reconstruction against its ground truth (metrics: README.md, \"Metrics\")");
   cmd->add_option("--truth,-t", options->truth, "Ground-truth JSON from `curvebench generate`")->required();
   cmd->add_option("--result,-r", options->result, "Reconstruction JSON from `curvebench reconstruct`")->required();
   cmd->add_option("--points", options->points, "Points file the reconstruction indexes (default: its input path)");

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "generators/fourier_radius.h"
 #include "generators/polylines_are_simple.h"
 #include "generators/random.h"
 #include "generators/rose_curve.h"
@@ -22,33 +23,16 @@ void require(bool condition, const std::string& message) {
   if (!condition) throw std::invalid_argument(message);
 }
 
-// r(t) = 1 + sum over k = 2..6 of (a_k cos kt + b_k sin kt), coefficients uniform in
-// +-0.25/k: smooth, often with concavities, always star-shaped about the origin.
-struct FourierRadius {
-  static constexpr int kFirst = 2, kLast = 6;
-  std::array<double, kLast + 1> cosine{}, sine{};
-
-  double operator()(double t) const {
-    // cos kt and sin kt by the angle-addition recurrence: one sin/cos pair per evaluation.
-    const double c1 = std::cos(t), s1 = std::sin(t);
-    double ck = c1, sk = s1, r = 1.0;
-    for (int k = 2; k <= kLast; ++k) {
-      const double next_c = ck * c1 - sk * s1;
-      sk = sk * c1 + ck * s1;
-      ck = next_c;
-      r += cosine[k] * ck + sine[k] * sk;
-    }
-    return r;
-  }
-};
-
 std::vector<Point2> polar_polyline(const std::function<double(double)>& radius, int dense) {
   return closed_parametric_polyline([&](double t) { return radius(t) * Point2{std::cos(t), std::sin(t)}; }, dense);
 }
 
-// The random radius of `seed`: coefficients redrawn until the radius stays clear of zero
-// (r > 0.2, so no pinch) and the curve is simple, both checked on a 4096-vertex polyline
-// (independent of `dense`, so the same seed gives the same curve at any density).
+std::vector<Point2> random_fourier_polyline(std::uint64_t seed, int dense) {
+  return polar_polyline(random_fourier_radius(seed), dense);
+}
+
+}  // namespace
+
 FourierRadius random_fourier_radius(std::uint64_t seed) {
   Random random(seed);
   for (;;) {
@@ -62,12 +46,6 @@ FourierRadius random_fourier_radius(std::uint64_t seed) {
     if (clear_of_zero && find_polyline_crossing({polyline}).empty()) return radius;
   }
 }
-
-std::vector<Point2> random_fourier_polyline(std::uint64_t seed, int dense) {
-  return polar_polyline(random_fourier_radius(seed), dense);
-}
-
-}  // namespace
 
 Scene circle_scene(double radius, int dense) {
   require(radius > 0 && std::isfinite(radius), "circle: radius must be a positive number");

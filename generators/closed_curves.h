@@ -1,7 +1,8 @@
 // Ground-truth closed curves as dense polylines with their local feature size.
 //
-// A Scene is one or more disjoint simple closed curves, each a dense counter-clockwise
-// polyline (the last vertex joins the first) with, at every dense vertex, the local feature
+// A Scene is one or more disjoint simple curves, each a dense polyline: closed and
+// counter-clockwise (the last vertex joins the first), or open (from one end to the other;
+// the open families are in open_curves.h), with, at every dense vertex, the local feature
 // size: the distance to the medial axis of the whole scene (inner and outer). It is exact
 // where a formula exists (circle: its radius) and otherwise measured from the Voronoi
 // vertices of the dense polyline itself (see local_feature_size.h).
@@ -16,7 +17,8 @@
 namespace curvebench {
 
 struct DenseCurve {
-  std::vector<Point2> points;  // counter-clockwise, closed implicitly
+  std::vector<Point2> points;  // closed: counter-clockwise, the last joins the first; open: end to end
+  bool closed = true;
   std::vector<double> lfs;     // local feature size at each dense point
   std::vector<int> corners;    // dense indices of sharp corners (piecewise-smooth curves), increasing
 };

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "generators/number_text.h"
+#include "generators/open_curves.h"
 
 namespace curvebench {
 namespace {
@@ -54,6 +55,19 @@ const std::vector<CurveFamily>& curve_families() {
        {{"inner_radius", 0.8, false}, {"offset", 0.5, false}}, false,
        [](const ShapeValues& p, std::uint64_t, int dense) { return horned_scene(p.at("inner_radius"), p.at("offset"), dense); },
        nullptr},
+      {"arc", "open circular arc of the given radius over `angle` degrees (lfs = radius up to 180)",
+       {{"radius", 1, false}, {"angle", 270, false}}, false,
+       [](const ShapeValues& p, std::uint64_t, int dense) { return circular_arc_scene(p.at("radius"), p.at("angle"), dense); },
+       nullptr},
+      {"ellipse-arc", "open arc (a cos t, b sin t), t over `angle` degrees centred on (a, 0)",
+       {{"a", 2, false}, {"b", 1, false}, {"angle", 270, false}}, false,
+       [](const ShapeValues& p, std::uint64_t, int dense) { return elliptic_arc_scene(p.at("a"), p.at("b"), p.at("angle"), dense); },
+       nullptr},
+      {"spiral", "open Archimedean spiral r = gap (1 + phi / 2 pi) over `turns` turns", {{"turns", 2, false}, {"gap", 0.3, false}},
+       false, [](const ShapeValues& p, std::uint64_t, int dense) { return spiral_scene(p.at("turns"), p.at("gap"), dense); },
+       nullptr},
+      {"open-random", "open arc of a random smooth curve over 180-300 degrees", {}, true,
+       [](const ShapeValues&, std::uint64_t seed, int dense) { return open_random_scene(seed, dense); }, nullptr},
   };
   return all;
 }
@@ -71,7 +85,7 @@ ShapeValues resolve_shape(const CurveFamily& family, const ShapeValues& given) {
   ShapeValues values;
   for (const auto& p : family.parameters) values[p.name] = p.default_value;
   for (const auto& [name, value] : given) {
-    const auto known = std::find_if(family.parameters.begin(), family.parameters.end(), [&](const auto& p) { return p.name == name; });
+    const auto known = std::find_if(family.parameters.begin(), family.parameters.end(), [&name = name](const auto& p) { return p.name == name; });
     if (known == family.parameters.end()) {
       std::string names;
       for (const auto& p : family.parameters) names += (names.empty() ? "" : ", ") + p.name;

@@ -4,8 +4,8 @@
 // A family has a name, a one-line description, named shape parameters with defaults (some
 // integer), whether its shape depends on the seed, a builder (shape values, seed, dense
 // vertices per curve -> Scene) and, where one is known in closed form, its exact interior
-// medial axis. Imported outlines ("outline") are not in the table: they come from a file
-// (generate.h).
+// medial axis (open families have none: they bound no region). Imported outlines
+// ("outline") are not in the table: they come from a file (generate.h).
 #pragma once
 
 #include <cstdint>

@@ -20,6 +20,7 @@ void check_settings(const GeneratorSettings& s) {
   if (s.noise < 0) throw std::runtime_error("--noise: must be >= 0");
   if (s.outliers < 0) throw std::runtime_error("--outliers: must be >= 0 (a fraction of the curve samples)");
   if (s.noise_scale != "lfs" && s.noise_scale != "diagonal") throw std::runtime_error("--noise-scale: must be 'lfs' or 'diagonal'");
+  if (s.noise_model != "gaussian" && s.noise_model != "uniform") throw std::runtime_error("--noise-model: must be 'gaussian' or 'uniform'");
   if (s.sampler == "epsilon") {
     if (s.epsilon <= 0) throw std::runtime_error("--epsilon: must be > 0");
     if (s.min_step_fraction <= 0 || s.min_step_fraction > 1) throw std::runtime_error("--min-step-fraction: must be in (0, 1]");
@@ -60,7 +61,7 @@ GroundTruth ground_truth_of(const Scene& scene, const SampledScene& samples, con
                             nlohmann::ordered_json record) {
   GroundTruth truth;
   truth.generator = std::move(record);
-  for (const auto& curve : scene.curves) truth.curves.push_back({curve.points, curve.lfs});
+  for (const auto& curve : scene.curves) truth.curves.push_back({curve.points, curve.lfs, curve.closed});
   for (size_t i = 0; i < samples.points.size(); ++i) {
     GroundTruthSample sample;
     if (samples.curve[i] >= 0) sample = {samples.curve[i], samples.parameter[i], samples.lfs[i]};
@@ -88,10 +89,15 @@ GeneratedInput generate(const GeneratorSettings& settings) {
                              : arc_length_sample(scene, settings.count, settings.sampler == "random", derive_seed(seed, 1));
   if (settings.noise > 0) {
     const NoiseScale scale = settings.noise_scale == "lfs" ? NoiseScale::local_feature_size : NoiseScale::bounding_box_diagonal;
-    add_normal_noise(scene, samples, settings.noise, scale, derive_seed(seed, 2));
+    const NoiseModel model = settings.noise_model == "gaussian" ? NoiseModel::gaussian : NoiseModel::uniform;
+    add_normal_noise(scene, samples, settings.noise, scale, derive_seed(seed, 2), model);
   }
   if (settings.outliers > 0) add_outliers(scene, samples, settings.outliers, derive_seed(seed, 3));
-  const MedialAxis medial_axis = family && family->exact_medial_axis ? family->exact_medial_axis(shape) : interior_medial_axis(scene);
+  const bool open = std::any_of(scene.curves.begin(), scene.curves.end(), [](const DenseCurve& c) { return !c.closed; });
+  // Open curves bound no region, so there is no interior medial axis.
+  const MedialAxis medial_axis = open ? MedialAxis{}
+                                 : family && family->exact_medial_axis ? family->exact_medial_axis(shape)
+                                                                       : interior_medial_axis(scene);
   return {samples.points, ground_truth_of(scene, samples, medial_axis, std::move(record))};
 }
 

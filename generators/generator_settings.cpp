@@ -46,6 +46,7 @@ void set_generator_setting(GeneratorSettings& settings, const std::string& name,
   else if (name == "count") settings.count = static_cast<int>(parse_integer(option, text, 3, 1 << 28));
   else if (name == "noise") settings.noise = parse_number(option, text);
   else if (name == "noise_scale") settings.noise_scale = text;
+  else if (name == "noise_model") settings.noise_model = text;
   else if (name == "outliers") settings.outliers = parse_number(option, text);
   else if (name == "seed") settings.seed = static_cast<std::uint64_t>(parse_integer(option, text, 0, 1LL << 53));
   else if (name == "dense") settings.dense = static_cast<int>(parse_integer(option, text, 16, 1 << 24));
@@ -53,7 +54,7 @@ void set_generator_setting(GeneratorSettings& settings, const std::string& name,
   else if (name == "input_format") settings.input_format = text;
   else {
     throw std::runtime_error("unknown generator setting '" + name + "' (known: family, shape, sampler, epsilon, min_step_fraction, "
-                             "count, noise, noise_scale, outliers, seed, dense, input, input_format)");
+                             "count, noise, noise_scale, noise_model, outliers, seed, dense, input, input_format)");
   }
 }
 
@@ -95,6 +96,7 @@ nlohmann::ordered_json generator_settings_to_json(const GeneratorSettings& setti
   }
   record["noise"] = settings.noise;
   record["noise_scale"] = settings.noise_scale;
+  if (settings.noise_model != GeneratorSettings{}.noise_model) record["noise_model"] = settings.noise_model;
   record["outliers"] = settings.outliers;
   record["seed"] = settings.seed;
   return record;

@@ -10,7 +10,8 @@
 //   text, "shape" an object of name: value), out the settings; the same errors.
 // generator_settings_to_json: in settings, out the record that the ground truth and the
 //   points file carry: every shape parameter of the family resolved, only the sampler's own
-//   settings, "seed" last. Throws as resolve_shape (families.h) does.
+//   settings, "noise_model" only when it is not the default (so records made before it
+//   existed stay the same), "seed" last. Throws as resolve_shape (families.h) does.
 #pragma once
 
 #include <cstdint>
@@ -28,8 +29,9 @@ struct GeneratorSettings {
   double epsilon = 0.2;             // epsilon sampler
   double min_step_fraction = 0.5;   // epsilon sampler: each step is a random fraction in [this, 1] of the largest
   int count = 200;                  // uniform and random samplers
-  double noise = 0;                 // Gaussian noise along the normal, in units of noise_scale
+  double noise = 0;                 // noise along the normal, in units of noise_scale
   std::string noise_scale = "lfs";  // lfs or diagonal
+  std::string noise_model = "gaussian";  // gaussian (noise is the standard deviation) or uniform (the half-width)
   double outliers = 0;              // a fraction of the curve samples
   std::uint64_t seed = 1;           // the shape (seeded families), the sampler, noise and outliers
   int dense = 8192;                 // dense vertices per curve of the true polyline

@@ -12,9 +12,17 @@
 namespace curvebench {
 
 struct GroundTruthCurve {
-  std::vector<Point2> vertices;  // closed implicitly
+  std::vector<Point2> vertices;  // closed: the last joins the first; open: from one end to the other
   std::vector<double> lfs;       // one per vertex
+  bool closed = true;
 };
+
+inline bool has_open_curve(const std::vector<GroundTruthCurve>& curves) {
+  for (const auto& curve : curves) {
+    if (!curve.closed) return true;
+  }
+  return false;
+}
 
 struct GroundTruthSample {
   int curve = -1;  // index into curves, -1 for an outlier

@@ -41,20 +41,27 @@ bool consecutive_edges_fold(const KPoint& a, const KPoint& b, const KPoint& c) {
 
 }  // namespace
 
-std::string find_polyline_crossing(const std::vector<std::vector<Point2>>& polylines) {
+std::string find_polyline_crossing(const std::vector<std::vector<Point2>>& polylines, const std::vector<bool>& closed) {
+  auto is_closed = [&](int c) { return closed.empty() || closed[c]; };
   std::vector<Segment> segments;
   double min_x = HUGE_VAL, min_y = HUGE_VAL, max_x = -HUGE_VAL, max_y = -HUGE_VAL;
   for (int c = 0; c < static_cast<int>(polylines.size()); ++c) {
     const auto& poly = polylines[c];
     const int n = static_cast<int>(poly.size());
+    const int edges = is_closed(c) ? n : n - 1;
     for (int i = 0; i < n; ++i) {
+      if (i == edges) {  // the last vertex of an open polyline starts no edge
+        min_x = std::min(min_x, poly[i].x), min_y = std::min(min_y, poly[i].y);
+        max_x = std::max(max_x, poly[i].x), max_y = std::max(max_y, poly[i].y);
+        continue;
+      }
       const Point2 p = poly[i], q = poly[(i + 1) % n];
       if (p == q) return "curve " + std::to_string(c) + " repeats vertex " + std::to_string(i);
       segments.push_back({c, i, KPoint(p.x, p.y), KPoint(q.x, q.y), std::min(p.x, q.x), std::min(p.y, q.y),
                           std::max(p.x, q.x), std::max(p.y, q.y)});
       min_x = std::min(min_x, p.x), min_y = std::min(min_y, p.y), max_x = std::max(max_x, p.x), max_y = std::max(max_y, p.y);
     }
-    for (int i = 0; i < n; ++i) {
+    for (int i = 0; i + (is_closed(c) ? 0 : 2) < n; ++i) {
       const Point2 a = poly[i], b = poly[(i + 1) % n], c2 = poly[(i + 2) % n];
       if (n >= 3 && consecutive_edges_fold(KPoint(a.x, a.y), KPoint(b.x, b.y), KPoint(c2.x, c2.y))) {
         return "curve " + std::to_string(c) + " folds back at vertex " + std::to_string((i + 1) % n);
@@ -86,6 +93,7 @@ std::string find_polyline_crossing(const std::vector<std::vector<Point2>>& polyl
   auto adjacent = [&](const Segment& s, const Segment& t) {
     if (s.curve != t.curve) return false;
     const int n = static_cast<int>(polylines[s.curve].size());
+    if (!is_closed(s.curve)) return s.edge + 1 == t.edge || t.edge + 1 == s.edge;
     return (s.edge + 1) % n == t.edge || (t.edge + 1) % n == s.edge;
   };
   for (size_t begin = 0, end = 0; begin < entries.size(); begin = end) {

@@ -1,6 +1,7 @@
-// Simplicity of a set of closed polylines.
+// Simplicity of a set of polylines.
 //
-// In: closed polylines (the last vertex joins the first), each with at least three vertices.
+// In: polylines, each closed (the last vertex joins the first; at least three vertices) or
+// open (its two ends do not join; at least two vertices), as `closed` says (empty: all closed).
 // Out: an empty string if every polyline is simple and no two polylines meet; otherwise a
 // short description of the first crossing found, e.g. "curve 0 edge 3 meets curve 0 edge 7".
 // Nested polylines are fine (they do not meet). Uses CGAL's exact orientation predicate, on
@@ -14,6 +15,6 @@
 
 namespace curvebench {
 
-std::string find_polyline_crossing(const std::vector<std::vector<Point2>>& polylines);
+std::string find_polyline_crossing(const std::vector<std::vector<Point2>>& polylines, const std::vector<bool>& closed = {});
 
 }  // namespace curvebench

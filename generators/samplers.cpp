@@ -6,16 +6,17 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/nearest_neighbors.h"
 #include "generators/random.h"
-#include "generators/nearest_point_tree.h"
 
 namespace curvebench {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Arc-length access to one dense curve. Positions u are arc lengths from vertex 0 and may
-// run past one full turn (up to two), so that a walk starting anywhere never wraps.
+// Arc-length access to one dense curve. Positions u are arc lengths from vertex 0; on a
+// closed curve they may run past one full turn (up to two), so that a walk starting
+// anywhere never wraps; on an open one they lie in [0, total], vertex n-1 at total.
 class ArcLength {
  public:
   explicit ArcLength(const DenseCurve& curve) : curve_(curve), start_(curve.points.size() + 1, 0.0) {
@@ -24,8 +25,10 @@ class ArcLength {
       const Point2 d = curve.points[(i + 1) % n] - curve.points[i];
       start_[i + 1] = start_[i] + std::sqrt(dot(d, d));
     }
+    if (!curve.closed) start_.pop_back();  // no closing edge
   }
 
+  bool closed() const { return curve_.closed; }
   double total() const { return start_.back(); }
   int vertex_count() const { return static_cast<int>(curve_.points.size()); }
   // Unrolled vertex j (vertex j mod n, in turn j / n) and its position.
@@ -53,22 +56,25 @@ class ArcLength {
     const Point2 d = curve_.points[(i + 1) % vertex_count()] - curve_.points[i];
     return (1.0 / norm(d)) * Point2{d.y, -d.x};
   }
+  // Closed: the fraction of a turn in [0, 1); open: of the way from the first end, in [0, 1].
   double fraction_of_turn(double u) const {
+    if (!closed()) return u / total();
     const double f = std::fmod(u, total()) / total();
     return f < 1.0 ? f : 0.0;
   }
 
  private:
+  // The edge holding position u (of an open curve: the last edge holds its end) and how far along it.
   std::pair<int, double> locate(double u) const {
-    u = std::fmod(u, total());
+    if (closed()) u = std::fmod(u, total());
     const int i = std::clamp(static_cast<int>(std::upper_bound(start_.begin(), start_.end(), u) - start_.begin()) - 1, 0,
-                             vertex_count() - 1);
+                             vertex_count() - (closed() ? 1 : 2));
     const double length = start_[i + 1] - start_[i];
     return {i, length > 0 ? std::clamp((u - start_[i]) / length, 0.0, 1.0) : 0.0};
   }
 
   const DenseCurve& curve_;
-  std::vector<double> start_;  // arc length at each vertex; start_[n] is the total length
+  std::vector<double> start_;  // arc length at each vertex; closed: start_[n] is the total length
 };
 
 // Epsilon-sampling of one curve by a forward walk; returns the sample positions in order.
@@ -129,7 +135,8 @@ class EpsilonWalk {
   std::vector<int> not_covered_by_a_;
 };
 
-// Appends samples of curve c at arc positions in walking order, and the cycle through them.
+// Appends samples of curve c at arc positions in walking order, and the cycle (closed
+// curve) or path (open curve) through them.
 void append_curve_samples(SampledScene& out, const ArcLength& arc, int c, const std::vector<double>& positions) {
   const int first = static_cast<int>(out.points.size());
   const int count = static_cast<int>(positions.size());
@@ -139,7 +146,7 @@ void append_curve_samples(SampledScene& out, const ArcLength& arc, int c, const 
     out.parameter.push_back(arc.fraction_of_turn(u));
     out.lfs.push_back(arc.lfs_at(u));
   }
-  for (int i = 0; i < count; ++i) out.true_edges.push_back(make_edge(first + i, first + (i + 1) % count));
+  for (int i = 0; i + (arc.closed() ? 0 : 1) < count; ++i) out.true_edges.push_back(make_edge(first + i, first + (i + 1) % count));
 }
 
 struct Box {
@@ -167,14 +174,20 @@ SampledScene epsilon_sample(const Scene& scene, double epsilon, std::uint64_t se
   for (int c = 0; c < static_cast<int>(scene.curves.size()); ++c) {
     const ArcLength arc(scene.curves[c]);
     EpsilonWalk walk(arc, epsilon);
-    const double start = arc.total() * random.uniform();
+    // A closed curve from a random start round to it; an open one from end to end, both ends sampled.
+    const double start = arc.closed() ? arc.total() * random.uniform() : 0.0;
     const double end = start + arc.total();
     std::vector<double> positions{start};
-    // Steps are capped at a third of the curve so that every curve gets at least three
-    // samples (a closed curve to reconstruct), however large epsilon is.
+    // Steps are capped at a third of a closed curve, half of an open one, so that every curve
+    // gets at least three samples (a closed curve or a path with a middle to reconstruct),
+    // however large epsilon is.
+    const double longest_step = arc.total() / (arc.closed() ? 3 : 2);
     for (double a = start;;) {
-      const double largest = walk.largest_step_end(a, std::min(a + arc.total() / 3, end));
-      if (largest >= end) break;
+      const double largest = walk.largest_step_end(a, std::min(a + longest_step, end));
+      if (largest >= end) {
+        if (!arc.closed()) positions.push_back(end);
+        break;
+      }
       double b = a + random.uniform(min_step_fraction, 1.0) * (largest - a);
       // Coverage is not monotone in b on a curved arc; fall back to the largest step.
       if (!walk.covered_between(a, b)) b = largest;
@@ -206,7 +219,12 @@ SampledScene arc_length_sample(const Scene& scene, int count, bool random_positi
   for (int c = 0; c < curves; ++c) {
     const double length = arcs[c].total();
     std::vector<double> positions(share[c]);
-    if (random_positions) {
+    if (!arcs[c].closed()) {
+      // Both ends, and the others between them: at independent uniform positions or equally spaced.
+      positions.front() = 0.0, positions.back() = length;
+      for (int i = 1; i + 1 < share[c]; ++i) positions[i] = random_positions ? length * random.uniform() : length * i / (share[c] - 1);
+      std::sort(positions.begin(), positions.end());
+    } else if (random_positions) {
       for (double& u : positions) u = length * random.uniform();
       std::sort(positions.begin(), positions.end());
     } else {
@@ -219,7 +237,8 @@ SampledScene arc_length_sample(const Scene& scene, int count, bool random_positi
   return out;
 }
 
-void add_normal_noise(const Scene& scene, SampledScene& samples, double level, NoiseScale scale, std::uint64_t seed) {
+void add_normal_noise(const Scene& scene, SampledScene& samples, double level, NoiseScale scale, std::uint64_t seed,
+                      NoiseModel model) {
   if (!(level >= 0) || !std::isfinite(level)) throw std::invalid_argument("noise level must be a number >= 0");
   const Box box = bounding_box(scene);
   const double diagonal = distance(box.low, box.high);
@@ -229,9 +248,10 @@ void add_normal_noise(const Scene& scene, SampledScene& samples, double level, N
     const int c = samples.curve[i];
     if (c < 0) continue;
     const ArcLength& arc = arcs[c];
-    const double sigma = level * (scale == NoiseScale::local_feature_size ? samples.lfs[i] : diagonal);
+    const double size = level * (scale == NoiseScale::local_feature_size ? samples.lfs[i] : diagonal);
     const double u = samples.parameter[i] * arc.total();
-    samples.points[i] = samples.points[i] + (sigma * random.gaussian()) * arc.normal_at(u);
+    const double offset = model == NoiseModel::gaussian ? size * random.gaussian() : random.uniform(-size, size);
+    samples.points[i] = samples.points[i] + offset * arc.normal_at(u);
   }
 }
 
@@ -259,7 +279,7 @@ double achieved_epsilon(const Scene& scene, const SampledScene& samples) {
     if (samples.curve[i] >= 0) on_curves.push_back(samples.points[i]);
   }
   if (on_curves.empty()) return std::numeric_limits<double>::infinity();
-  const NearestPointTree nearest(on_curves);
+  const NearestNeighbors nearest(on_curves);
   double worst = 0.0;
   for (const auto& curve : scene.curves) {
     for (size_t i = 0; i < curve.points.size(); ++i) {

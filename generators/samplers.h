@@ -32,12 +32,16 @@ double achieved_epsilon(const Scene& scene, const SampledScene& samples);
 SampledScene arc_length_sample(const Scene& scene, int count, bool random_positions, std::uint64_t seed);
 
 enum class NoiseScale { local_feature_size, bounding_box_diagonal };
+enum class NoiseModel { gaussian, uniform };
 
-// Moves every curve sample along the curve normal at its parameter by a Gaussian amount of
-// standard deviation `level` times the local feature size there, or times the diagonal of
-// the scene's bounding box. The truth (curve, parameter, lfs, edges) stays as drawn.
-// Throws std::invalid_argument unless level is a finite number >= 0.
-void add_normal_noise(const Scene& scene, SampledScene& samples, double level, NoiseScale scale, std::uint64_t seed);
+// Moves every curve sample along the curve normal at its parameter by a random amount whose
+// size w is `level` times the local feature size there, or times the diagonal of the
+// scene's bounding box: Gaussian of standard deviation w, or uniform in [-w, w] (a band of
+// half-width w, the noise model of denoising guarantees such as StretchDenoise's). The truth
+// (curve, parameter, lfs, edges) stays as drawn. Throws std::invalid_argument unless level
+// is a finite number >= 0.
+void add_normal_noise(const Scene& scene, SampledScene& samples, double level, NoiseScale scale, std::uint64_t seed,
+                      NoiseModel model = NoiseModel::gaussian);
 
 // Appends round(fraction * number of curve samples) outliers, uniform in the scene's
 // bounding box grown by 10% on every side (curve -1, parameter and lfs NaN, no edges).

@@ -16,18 +16,25 @@ namespace curvebench {
 // the curve equally spaced in arc length (to about 1e-6 relative), starting at t = 0.
 std::vector<Point2> closed_parametric_polyline(const std::function<Point2(double)>& curve, int dense);
 
+// In: an open curve t -> point for t in [0, 1] and a vertex count. Out: `dense` points of the
+// curve equally spaced in arc length (to about 1e-6 relative), the first at t = 0 and the
+// last at t = 1.
+std::vector<Point2> open_parametric_polyline(const std::function<Point2(double)>& curve, int dense);
+
 // A curve without corners, local feature size still to be measured.
-inline DenseCurve smooth_curve(std::vector<Point2> points) {
+inline DenseCurve smooth_curve(std::vector<Point2> points, bool closed = true) {
   DenseCurve curve;
   curve.points = std::move(points);
+  curve.closed = closed;
   return curve;
 }
 
-// In: closed polylines with points (and corners, if any) filled in. Out: a Scene whose curves
-// are these made counter-clockwise (the first vertex kept first, corners renumbered), and
-// local feature size measured (local_feature_size.h) unless `exact_lfs` gives it. Throws
-// std::invalid_argument naming the scene if a polyline has fewer than three vertices,
-// repeats a vertex, or the polylines are not simple and disjoint.
+// In: polylines with points, closed flag (and corners, if any) filled in. Out: a Scene whose
+// closed curves are these made counter-clockwise (the first vertex kept first, corners
+// renumbered; open ones keep their direction), and local feature size measured
+// (local_feature_size.h) unless `exact_lfs` gives it. Throws std::invalid_argument naming
+// the scene if a polyline has fewer than three vertices, repeats a vertex, or the polylines
+// are not simple and disjoint.
 Scene make_scene(std::string name, std::vector<DenseCurve> curves, const std::function<double(Point2)>& exact_lfs = nullptr);
 
 // In: closed polygons (the last vertex joins the first) and the total number of vertices

@@ -1,3 +1,4 @@
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -56,7 +57,7 @@ void run(const EvaluateOptions& options) {
   json["result"] = options.result;
   json["points"] = points_path;
   json["algorithm"] = result_json.value("algorithm", "");
-  json["oracle_l2_error"] = oracle;
+  json["oracle_l2_error"] = std::isnan(oracle) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(oracle);
   json["metrics"] = metrics_to_json(metrics);
   const std::string text = json.dump(2) + "\n";
   std::cout << text;

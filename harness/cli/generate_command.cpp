@@ -72,9 +72,12 @@ void add_generate_command(CLI::App& app) {
   setting("min_step_fraction", "--min-step-fraction", "each epsilon step is a random fraction in [this, 1] of the largest",
           number_text(defaults.min_step_fraction));
   setting("count", "--count,-n", "number of samples for the uniform and random samplers", number_text(defaults.count));
-  setting("noise", "--noise", "Gaussian noise along the normal: standard deviation as a multiple of --noise-scale",
+  setting("noise", "--noise", "noise along the normal, as a multiple of --noise-scale: the standard deviation (gaussian) or the "
+                              "half-width w of the band [-w, w] (uniform)",
           number_text(defaults.noise));
   setting("noise_scale", "--noise-scale", "lfs (local feature size at the sample) or diagonal (of the bounding box)", defaults.noise_scale);
+  setting("noise_model", "--noise-model", "gaussian or uniform (in the band [-w, w] along the normal, w = noise x scale)",
+          defaults.noise_model);
   setting("outliers", "--outliers", "outliers as a fraction of the curve samples, uniform in the box around the shape",
           number_text(defaults.outliers));
   setting("seed", "--seed,-s", "seed of the shape (random families), the sampler, noise and outliers",

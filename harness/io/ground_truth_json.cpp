@@ -74,6 +74,7 @@ nlohmann::ordered_json ground_truth_to_json(const GroundTruth& truth) {
     nlohmann::ordered_json c;
     c["vertices"] = points_to_json(curve.vertices);
     c["lfs"] = curve.lfs;
+    if (!curve.closed) c["closed"] = false;
     curves.push_back(std::move(c));
   }
   out["curves"] = std::move(curves);
@@ -114,6 +115,10 @@ GroundTruth ground_truth_from_json(const nlohmann::ordered_json& json, const std
     curve.vertices = read.points(read.field(curves[c], "vertices", where), where + " vertices");
     for (const auto& v : read.field(curves[c], "lfs", where)) curve.lfs.push_back(read.number(v, where + " lfs"));
     if (curve.lfs.size() != curve.vertices.size()) read.fail(where + " has " + std::to_string(curve.lfs.size()) + " lfs values for " + std::to_string(curve.vertices.size()) + " vertices");
+    if (curves[c].contains("closed")) {
+      if (!curves[c]["closed"].is_boolean()) read.fail(where + ": \"closed\" is not true or false");
+      curve.closed = curves[c]["closed"].get<bool>();
+    }
     truth.curves.push_back(std::move(curve));
   }
 

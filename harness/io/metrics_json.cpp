@@ -18,7 +18,7 @@ nlohmann::ordered_json number_or_null(const std::optional<double>& value) {
 nlohmann::ordered_json metrics_to_json(const ReconstructionMetrics& metrics) {
   nlohmann::ordered_json json;
   json["true_curves"] = metrics.true_curves;
-  if (metrics.l2_error) json["l2_error"] = *metrics.l2_error;
+  if (metrics.l2_error) json["l2_error"] = number_or_null(*metrics.l2_error);
   if (metrics.hausdorff) json["hausdorff"] = number_or_null(*metrics.hausdorff);
   if (metrics.vertex_distance) {
     json["vertex_distance_mean"] = metrics.vertex_distance->mean;

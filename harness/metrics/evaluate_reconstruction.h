@@ -4,7 +4,8 @@
 //      and a reconstruction of those points.
 // Out: the metrics of each output the reconstruction has; those of an output it lacks stay
 //      absent. (The oracle L2 error, which needs no reconstruction, is in oracle_l2_error.h.)
-//   curve          l2_error        even-odd region of the edges vs the true region (l2_error.h)
+//   curve          l2_error        even-odd region of the edges vs the true region (l2_error.h);
+//                                  NaN (written as null) when a true curve is open
 //                  hausdorff       Hausdorff distance between the true dense curves and the
 //                                  edges, over the true curves' bounding-box diagonal, exact to
 //                                  10^-4 of the diagonal (hausdorff_distance.h); infinite when
@@ -19,7 +20,8 @@
 //                                  whose edges join input points
 //   medial axis    medial_axis_hausdorff  Hausdorff distance between the true and the
 //                                  reconstructed interior medial axes (isolated vertices count
-//                                  as points), over the same diagonal; infinite if either is empty
+//                                  as points), over the same diagonal; infinite if either is
+//                                  empty; absent when a true curve is open (it has no interior)
 //   dominant points  count, CR, ISE, FOM over the samples (dominant_point_quality.h)
 // Throws std::invalid_argument if the point count differs from the truth's sample count or a
 // reconstructed coordinate is not finite (NaN, infinite), and
@@ -40,7 +42,7 @@ namespace curvebench {
 
 struct ReconstructionMetrics {
   int true_curves = 0;
-  std::optional<double> l2_error;
+  std::optional<double> l2_error;  // NaN when a true curve is open
   std::optional<double> hausdorff;  // over the diagonal; may be infinite
   std::optional<DistanceToCurve> vertex_distance;  // over the diagonal
   std::optional<CurveTopology> topology;

@@ -6,7 +6,8 @@
 // Out: the error, >= 0; 0 when the even-odd regions coincide. Both regions are even-odd
 //      regions as defined in even_odd_areas.h, so an open polyline or a dangling edge
 //      adds no area and the error is defined for every output; an empty reconstruction
-//      has error 1. Throws std::invalid_argument if the true region has zero area.
+//      has error 1. Throws std::invalid_argument if the true region has zero area. (Open
+//      true curves bound no region: evaluate_reconstruction.h reports no number for them.)
 #pragma once
 
 #include <span>

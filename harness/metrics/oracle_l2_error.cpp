@@ -1,5 +1,6 @@
 #include "metrics/oracle_l2_error.h"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -13,6 +14,7 @@ double oracle_l2_error(const GroundTruth& truth, std::span<const Point2> points)
     throw std::invalid_argument("the points file has " + std::to_string(points.size()) + " points but the ground truth describes " +
                                 std::to_string(truth.samples.size()) + " samples");
   }
+  if (has_open_curve(truth.curves)) return std::numeric_limits<double>::quiet_NaN();
   return l2_error(true_curve_segments(truth), edge_segments(points, truth.edges));
 }
 

@@ -4,8 +4,9 @@
 // sampling itself causes (chords cutting curved arcs, noise, missing curves without samples).
 //
 // In:  the ground truth and the input points it describes (one per truth sample).
-// Out: the error, >= 0. Throws std::invalid_argument if the point count differs from the
-//      truth's sample count or the true curves enclose no area.
+// Out: the error, >= 0; NaN (written as null) when a true curve is open, since an open
+//      curve bounds no region. Throws std::invalid_argument if the point count differs from
+//      the truth's sample count or the true curves enclose no area.
 #pragma once
 
 #include <span>

@@ -5,8 +5,9 @@ namespace curvebench {
 std::vector<Segment2> true_curve_segments(const GroundTruth& truth) {
   std::vector<Segment2> segments;
   for (const auto& curve : truth.curves) {
-    const auto closed = closed_polyline_segments(curve.vertices);
-    segments.insert(segments.end(), closed.begin(), closed.end());
+    auto pieces = closed_polyline_segments(curve.vertices);
+    if (!curve.closed && !pieces.empty()) pieces.pop_back();  // no segment from the last vertex back to the first
+    segments.insert(segments.end(), pieces.begin(), pieces.end());
   }
   return segments;
 }

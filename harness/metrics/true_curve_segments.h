@@ -1,5 +1,6 @@
-// The true curves of a ground truth as one segment set: each dense closed polyline, closing
-// segment included. In: a ground truth. Out: its curves' segments, curve after curve.
+// The true curves of a ground truth as one segment set: each dense polyline, the closing
+// segment included for a closed curve, from end to end for an open one.
+// In: a ground truth. Out: its curves' segments, curve after curve.
 #pragma once
 
 #include <vector>

@@ -3,11 +3,13 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -73,7 +75,7 @@ struct PreparedInput {
   bool ready = false;
   std::string failure;     // why it could not be generated
   int points = 0;
-  double oracle_l2_error = 0;
+  double oracle_l2_error = 0;  // NaN when the truth has an open curve
 };
 
 // Progress and an estimate of the time left, on stderr: rewritten in place on a terminal,
@@ -143,7 +145,9 @@ std::vector<PreparedInput> prepare_inputs(const SweepPlan& plan, const std::set<
         } else if (outcome.ending == ChildOutcome::Ending::kFinished) {
           input.ready = true;
           input.points = summary["points"].get<int>();
-          input.oracle_l2_error = summary["oracle_l2_error"].get<double>();
+          // null: the truth has an open curve (oracle_l2_error.h); the row writes it as null again
+          input.oracle_l2_error = summary["oracle_l2_error"].is_null() ? std::numeric_limits<double>::quiet_NaN()
+                                                                        : summary["oracle_l2_error"].get<double>();
         } else if (outcome.ending == ChildOutcome::Ending::kTimedOut) {
           input.failure = "input generation took longer than the timeout";
         } else {
@@ -162,7 +166,7 @@ Json row_header(const SweepPlan& plan, const SweepRun& run, const PreparedInput&
   row["input"] = plan.inputs[run.input];
   if (input.ready) {
     row["input_points"] = input.points;
-    row["oracle_l2_error"] = input.oracle_l2_error;
+    row["oracle_l2_error"] = std::isnan(input.oracle_l2_error) ? Json(nullptr) : Json(input.oracle_l2_error);
   }
   return row;
 }

@@ -110,6 +110,26 @@ TEST(Samplers, NormalNoiseMovesAlongTheNormalWithTheRequestedScale) {
   EXPECT_THROW(add_normal_noise(circle, samples, std::nan(""), NoiseScale::local_feature_size, 1), std::invalid_argument);
 }
 
+TEST(Samplers, UniformNoiseFillsTheBandOfHalfWidthNoiseTimesScale) {
+  const Scene circle = circle_scene(2.0);
+  const SampledScene clean = arc_length_sample(circle, 4000, false, 3);
+  SampledScene samples = clean;
+  add_normal_noise(circle, samples, 0.1, NoiseScale::local_feature_size, 9, NoiseModel::uniform);
+  const double half_width = 0.1 * 2.0;  // noise x lfs
+  double largest = 0, sum = 0, sum2 = 0;
+  for (size_t i = 0; i < samples.points.size(); ++i) {
+    const double radial = norm(samples.points[i]) - norm(clean.points[i]);
+    largest = std::max(largest, std::abs(radial));
+    sum += radial, sum2 += radial * radial;
+  }
+  const double n = static_cast<double>(samples.points.size());
+  EXPECT_LE(largest, half_width * (1 + 1e-9));
+  EXPECT_GT(largest, 0.99 * half_width);                                   // the band is filled to its edges
+  EXPECT_NEAR(sum / n, 0.0, 0.01 * half_width * 3);                        // centred on the curve
+  EXPECT_NEAR(std::sqrt(sum2 / n), half_width / std::sqrt(3.0), 0.02 * half_width);  // uniform: w / sqrt 3
+  EXPECT_EQ(samples.true_edges, clean.true_edges);
+}
+
 TEST(Samplers, OutliersAreAFractionInsideTheGrownBox) {
   const Scene scene = ellipse_scene(2.0, 1.0);
   SampledScene samples = epsilon_sample(scene, 0.2, 1);

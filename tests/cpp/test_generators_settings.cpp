@@ -64,6 +64,8 @@ TEST(GeneratorSettings, RecordResolvesTheShapeAndKeepsTheSamplersOwnSettings) {
   EXPECT_EQ(record.dump(),
             R"({"family":"rose","shape":{"a":1.0,"b":0.3,"k":5},"dense":8192,"sampler":"epsilon","epsilon":0.2,)"
             R"("min_step_fraction":0.5,"noise":0.0,"noise_scale":"lfs","outliers":0.0,"seed":1})");
+  s.noise_model = "uniform";  // recorded only when not the default, after noise_scale
+  EXPECT_NE(generator_settings_to_json(s).dump().find(R"("noise_scale":"lfs","noise_model":"uniform","outliers")"), std::string::npos);
   s.sampler = "uniform";
   EXPECT_FALSE(generator_settings_to_json(s).contains("epsilon"));
   EXPECT_EQ(generator_settings_to_json(s)["count"], 200);
@@ -96,6 +98,9 @@ TEST(Generate, RejectsSettingsOutOfRange) {
   s = {};
   s.noise = -1;
   EXPECT_EQ(error_of([&] { generate(s); }), "--noise: must be >= 0");
+  s = {};
+  s.noise_model = "laplace";
+  EXPECT_EQ(error_of([&] { generate(s); }), "--noise-model: must be 'gaussian' or 'uniform'");
   s = {};
   s.family = "outline";
   EXPECT_NE(error_of([&] { generate(s); }).find("needs --input"), std::string::npos);

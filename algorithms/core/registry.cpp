@@ -14,9 +14,9 @@ std::vector<std::unique_ptr<Algorithm>>& registered() {
   return algorithms;
 }
 
-class DelaunayCurveAlgorithm final : public Algorithm {
+class EdgesFromDelaunay final : public Algorithm {
  public:
-  DelaunayCurveAlgorithm(std::string name, std::string citation, DelaunayEdgeFunction edges)
+  EdgesFromDelaunay(std::string name, std::string citation, DelaunayEdgeFunction edges)
       : info_{std::move(name), std::move(citation), kCurve, {}, SiteInput::kDelaunay}, edges_(edges) {}
   const AlgorithmInfo& info() const override { return info_; }
   SiteResult run(const Sites& sites, const ParameterValues&, PhaseTimer& timer) const override {
@@ -50,7 +50,7 @@ bool register_algorithm(std::unique_ptr<Algorithm> algorithm) {
 }
 
 bool register_delaunay_curve_algorithm(std::string name, std::string citation, DelaunayEdgeFunction edges) {
-  return register_algorithm(std::make_unique<DelaunayCurveAlgorithm>(std::move(name), std::move(citation), edges));
+  return register_algorithm(std::make_unique<EdgesFromDelaunay>(std::move(name), std::move(citation), edges));
 }
 
 std::vector<const Algorithm*> all_algorithms() {

@@ -367,9 +367,11 @@ class WindowSolver {
 };
 
 // Spec 2.8 on one component: grow each window forward then backward while one line fits the
-// noise discs, solve, continue from where the forward growth stopped.
+// noise discs, solve, continue from where the forward growth stopped. A window stops growing
+// at `max_window` vertices (0: never) as it stops where no line fits: the reference lets one
+// window take a whole straight component, and each growth step re-tests the whole window.
 void denoise_component(const Component& component, std::span<const Point2> sites, const FittedNeighborhoods& fits,
-                       const std::vector<double>& sigma, WindowSolver& solver) {
+                       const std::vector<double>& sigma, std::size_t max_window, WindowSolver& solver) {
   const std::vector<int>& members = component.members;
   const int length = static_cast<int>(members.size());
   const bool cyclic = component.cyclic;
@@ -417,7 +419,7 @@ void denoise_component(const Component& component, std::span<const Point2> sites
       }
       window.push_back(after);
       const bool grows = !sharp[e] && fits_window(window);
-      if (!grows || (cyclic && window.size() >= cap)) {
+      if (!grows || (cyclic && window.size() >= cap) || (max_window > 0 && window.size() > max_window)) {
         window.pop_back();
         break;
       }
@@ -428,7 +430,7 @@ void denoise_component(const Component& component, std::span<const Point2> sites
       if (before == kNone) break;
       window.push_front(before);
       const bool grows = !sharp[f] && fits_window(window);
-      if (!grows || (cyclic && window.size() >= cap)) {
+      if (!grows || (cyclic && window.size() >= cap) || (max_window > 0 && window.size() > max_window)) {
         window.pop_front();
         break;
       }
@@ -450,7 +452,7 @@ void denoise_component(const Component& component, std::span<const Point2> sites
 }  // namespace
 
 std::vector<Point2> denoise_along_normals(std::span<const Point2> sites, const FittedNeighborhoods& fits,
-                                          std::span<const double> noise_extents) {
+                                          std::span<const double> noise_extents, int max_window) {
   std::vector<Point2> positions(sites.begin(), sites.end());
   const int n = static_cast<int>(sites.size());
   if (n < 3 || static_cast<int>(fits.states.size()) != n || static_cast<int>(noise_extents.size()) != n)
@@ -470,7 +472,7 @@ std::vector<Point2> denoise_along_normals(std::span<const Point2> sites, const F
     if (key[s] != kNone) samples_by_key[key[s]].push_back(s);
   WindowSolver solver(sites, positions, o.normals, samples_by_key);
   // Every component is denoised (the reference only the one holding V[0], spec §3).
-  for (const Component& component : components(fits, o)) denoise_component(component, sites, fits, sigma, solver);
+  for (const Component& component : components(fits, o)) denoise_component(component, sites, fits, sigma, static_cast<std::size_t>(std::max(max_window, 0)), solver);
   return positions;
 }
 

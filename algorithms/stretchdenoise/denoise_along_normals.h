@@ -10,7 +10,8 @@
 //      angle proxies are minimised in the least-squares sense subject to the samples' signed
 //      distances to the polygon balancing, each vertex staying within sigma of its sample
 //      (spec 2.9). Chain ends (LEAF points, broken links) stay fixed; samples that are not
-//      on a component keep their position.
+//      on a component keep their position. A window grows to at most `max_window` vertices
+//      (0: as many as fit, as in the reference; growing one costs its size squared and more).
 #pragma once
 
 #include <span>
@@ -22,6 +23,6 @@
 namespace curvebench {
 
 std::vector<Point2> denoise_along_normals(std::span<const Point2> sites, const FittedNeighborhoods& fits,
-                                          std::span<const double> noise_extents);
+                                          std::span<const double> noise_extents, int max_window = 0);
 
 }  // namespace curvebench

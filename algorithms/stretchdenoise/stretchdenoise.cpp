@@ -22,7 +22,10 @@ class StretchDenoise final : public Algorithm {
                         "noise extent (input units) of every sample; 0: each sample's estimate from its circle fit"),
          real_parameter("min_noise_extent", 0.0, 0.0, std::numeric_limits<double>::max(),
                         "floor on every sample's noise extent (input units; 0: none)"),
-         max_neighbors_parameter()},
+         max_neighbors_parameter(),
+         integer_parameter("max_window", 256, 0, 1000000000,
+                           "vertices one least-squares window may grow to (0: unbounded, as the authors' code, whose "
+                           "cost grows with the fourth power of a window on a straight run)")},
         SiteInput::kDistinctPoints};
     return about;
   }
@@ -31,7 +34,8 @@ class StretchDenoise final : public Algorithm {
     FittedNeighborhoods fits = connect_fitted_neighborhoods(sites.points, params, timer);
     SiteResult result;
     result.moved_points = denoise_along_normals(
-        sites.points, fits, noise_extents(fits, params.real("noise_extent"), params.real("min_noise_extent")));
+        sites.points, fits, noise_extents(fits, params.real("noise_extent"), params.real("min_noise_extent")),
+        static_cast<int>(params.integer("max_window")));
     result.curve_edges = std::move(fits.edges);
     timer.lap("denoise");
     return result;

@@ -76,8 +76,11 @@ TEST(ChildProcess, ThisExecutableStartedAgain) {
 }
 
 TEST(ProcStatus, ReadsThisProcessAndTheMachine) {
-  EXPECT_GT(proc_status_kib(0, "VmRSS"), 0);
-  EXPECT_GE(proc_status_kib(0, "VmHWM"), proc_status_kib(0, "VmRSS"));
+  // Resident memory first: the high-water mark read after it can only be as large or larger,
+  // whereas memory may grow between the two reads.
+  const long resident = proc_status_kib(0, "VmRSS");
+  EXPECT_GT(resident, 0);
+  EXPECT_GE(proc_status_kib(0, "VmHWM"), resident);
   EXPECT_GT(proc_status_kib(::getpid(), "VmHWM"), 0);
   EXPECT_EQ(proc_status_kib(0, "NoSuchField"), 0);
   EXPECT_GT(meminfo_kib("MemAvailable"), 0);

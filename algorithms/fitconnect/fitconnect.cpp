@@ -1,5 +1,7 @@
 #include "fitconnect/fitconnect.h"
 
+#include "core/denoised_curve.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -79,6 +81,7 @@ std::vector<Point2> blended_positions(std::span<const Point2> sites, const Fitte
   }
   std::vector<Point2> positions(n);
   for (int i = 0; i < n; ++i) positions[i] = weight[i] > 0 ? (1.0 / weight[i]) * sum[i] : sites[i];
+  keep_finite_positions(sites, positions);
   return positions;
 }
 

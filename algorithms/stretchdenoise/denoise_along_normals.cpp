@@ -1,5 +1,7 @@
 #include "stretchdenoise/denoise_along_normals.h"
 
+#include "core/denoised_curve.h"
+
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
@@ -473,6 +475,7 @@ std::vector<Point2> denoise_along_normals(std::span<const Point2> sites, const F
   WindowSolver solver(sites, positions, o.normals, samples_by_key);
   // Every component is denoised (the reference only the one holding V[0], spec §3).
   for (const Component& component : components(fits, o)) denoise_component(component, sites, fits, sigma, static_cast<std::size_t>(std::max(max_window, 0)), solver);
+  keep_finite_positions(sites, positions);
   return positions;
 }
 

@@ -19,18 +19,7 @@ using testing::sorted;
 
 constexpr double kPi = std::numbers::pi;
 
-// n points at sorted random angles in [start, start + sweep] on a circle, so that the
-// samples adjacent along the curve have consecutive indices. Fixed seed.
-std::vector<Point2> random_arc(int n, double sweep, unsigned seed, Point2 center = {0, 0}, double radius = 1) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> angle(0, sweep);
-  std::vector<double> t(n);
-  for (double& value : t) value = angle(rng);
-  std::sort(t.begin(), t.end());
-  std::vector<Point2> points;
-  for (double value : t) points.push_back(center + radius * Point2{std::cos(value), std::sin(value)});
-  return points;
-}
+using testing::random_arc;
 
 // The open path first, first+1, ..., first+n-1.
 std::vector<Edge> path_edges(int n, int first = 0) {

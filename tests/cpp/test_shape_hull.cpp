@@ -45,14 +45,7 @@ int closed_polygon_size(const std::vector<Edge>& edges) {
 }
 
 std::vector<Point2> random_angle_circle(int n, unsigned seed, Point2 center = {0, 0}, double radius = 1) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi);
-  std::vector<double> t(n);
-  for (double& value : t) value = angle(rng);
-  std::sort(t.begin(), t.end());
-  std::vector<Point2> points;
-  for (double value : t) points.push_back(center + radius * Point2{std::cos(value), std::sin(value)});
-  return points;
+  return testing::random_arc(n, 2 * std::numbers::pi, seed, center, radius);
 }
 
 TEST(ShapeHull, CircleAndRoseWithRandomAnglesAreTheExactPolygon) {

@@ -118,14 +118,29 @@ inline Point2 rose_point(double t) { return curvebench::rose_point(1, 0.3, 5, t)
 
 // n points at random positions along the rose, in order along it: counter-clockwise by
 // parameter. Fixed seed.
-inline std::vector<Point2> rose_in_curve_order(int n, unsigned seed) {
+// n random parameters in [0, sweep), ascending. Fixed seed.
+inline std::vector<double> sorted_random_parameters(int n, double sweep, unsigned seed) {
   std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi);
+  std::uniform_real_distribution<double> angle(0, sweep);
   std::vector<double> t(n);
   for (double& value : t) value = angle(rng);
   std::sort(t.begin(), t.end());
+  return t;
+}
+
+inline std::vector<Point2> rose_in_curve_order(int n, unsigned seed) {
   std::vector<Point2> points;
-  for (double value : t) points.push_back(rose_point(value));
+  for (double value : sorted_random_parameters(n, 2 * std::numbers::pi, seed)) points.push_back(rose_point(value));
+  return points;
+}
+
+// n points at random angles in [0, sweep) on a circle, in order along it, so that samples
+// adjacent along the curve have consecutive indices (sweep 2 pi: a random-angle circle).
+inline std::vector<Point2> random_arc(int n, double sweep, unsigned seed, Point2 center = {0, 0}, double radius = 1) {
+  std::vector<Point2> points;
+  for (double value : sorted_random_parameters(n, sweep, seed)) {
+    points.push_back(center + radius * Point2{std::cos(value), std::sin(value)});
+  }
   return points;
 }
 

@@ -14,6 +14,7 @@
 #include <numeric>
 #include <utility>
 
+#include "core/distinct_points.h"
 #include "voronoi/cgal_kernel.h"
 
 namespace curvebench {
@@ -49,31 +50,10 @@ using cgal::insert_in_spatial_order;
 // Sites are the distinct input points in order of first occurrence. Only called when the
 // triangulation reports fewer vertices than input points, so the common case pays nothing.
 void deduplicate(std::span<const Point2> points, DelaunayVoronoi& dv) {
-  const int n = static_cast<int>(points.size());
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return points[a].x < points[b].x || (points[a].x == points[b].x && points[a].y < points[b].y);
-  });
-  std::vector<int> first_of(n);  // input index -> first input index with the same point
-  for (int k = 0; k < n;) {
-    int end = k;
-    while (end < n && points[order[end]] == points[order[k]]) ++end;
-    for (int j = k; j < end; ++j) first_of[order[j]] = order[k];  // stable: order[k] is smallest
-    k = end;
-  }
-  dv.site_of_input.assign(n, -1);
-  dv.input_of_site.clear();
-  dv.sites.clear();
-  for (int i = 0; i < n; ++i) {
-    if (first_of[i] == i) {
-      dv.site_of_input[i] = static_cast<int>(dv.sites.size());
-      dv.input_of_site.push_back(i);
-      dv.sites.push_back(points[i]);
-    } else {
-      dv.site_of_input[i] = dv.site_of_input[first_of[i]];
-    }
-  }
+  DistinctPoints distinct = distinct_points(points);
+  dv.sites = std::move(distinct.points);
+  dv.input_of_site = std::move(distinct.input_of_point);
+  dv.site_of_input = std::move(distinct.point_of_input);
 }
 
 // Circumcentre of a triangle in exact rational arithmetic, rounded once at the end.

@@ -7,6 +7,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../harness/scripts/setup.sh"
 curvebench_install_debian_packages clang libclang-rt-14-dev
 curvebench_install_browser
+curvebench_install_slurm
 curvebench_build -DCURVEBENCH_BENCHMARKS=ON
 
 echo "== C++ tests (GoogleTest via ctest)"

@@ -10,8 +10,11 @@ namespace curvebench {
 void add_list_command(CLI::App& app) {
   auto* list = app.add_subcommand("list", "Name every algorithm, what it produces and its parameters");
   auto json = std::make_shared<bool>(false);
+  auto external = std::make_shared<std::vector<std::string>>();
   list->add_flag("--json", *json, "Print the machine-readable catalogue (names, citations, outputs, typed parameters)");
-  list->callback([json] {
+  add_external_option(*list, *external);
+  list->callback([json, external] {
+    register_external_files(*external);
     const auto algorithms = all_algorithms();
     if (*json) {
       std::cout << algorithm_catalogue(algorithms).dump(2) << "\n";

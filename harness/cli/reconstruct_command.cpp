@@ -18,6 +18,7 @@ struct ReconstructOptions {
   std::string output;
   std::string svg;
   std::vector<std::string> params;
+  std::vector<std::string> external;
 };
 
 // name=value assignments; each value is converted to its parameter's type when resolved.
@@ -33,6 +34,7 @@ std::map<std::string, ParameterValue> parse_parameters(const std::vector<std::st
 
 void run(const ReconstructOptions& options) {
   try {
+    register_external_files(options.external);
     const Algorithm& algorithm = find_algorithm(options.algorithm);
     const auto given = parse_parameters(options.params);
     const ParameterValues resolved = resolve_parameters(algorithm.name(), algorithm.info().parameters, given);
@@ -75,6 +77,7 @@ void add_reconstruct_command(CLI::App& app) {
   cmd->add_option("--output,-o", options->output, "Reconstruction JSON to write (default: print to stdout)");
   cmd->add_option("--svg", options->svg, "SVG picture of points, curve, medial axis and dominant points");
   cmd->add_option("--param,-p", options->params, "Algorithm parameter as name=value (repeatable)");
+  add_external_option(*cmd, options->external);
   cmd->callback([options] { run(*options); });
 }
 

@@ -5,6 +5,10 @@
 // parameters_to_json: resolved values as a JSON object, each in its declared type.
 // algorithm_catalogue: what `curvebench list --json` prints: for each algorithm its name,
 //   citation, outputs and parameters (name, type, default, range or choices, description).
+// parameter_spec_from_json: one parameter in the catalogue's form (name, type, default,
+//   minimum, maximum, minimum_exclusive, choices, description; a missing bound is none), as
+//   an external algorithm declares it; throws std::runtime_error naming `where` if malformed.
+// outputs_from_names: the inverse of output_names; throws naming `where` for an unknown name.
 #pragma once
 
 #include <map>
@@ -23,5 +27,7 @@ nlohmann::ordered_json parameters_to_json(const ParameterValues& values);
 nlohmann::ordered_json algorithm_catalogue(std::span<const Algorithm* const> algorithms);
 // The names of the outputs in `outputs` (a bitwise or of Output values), in a fixed order.
 std::vector<std::string> output_names(unsigned outputs);
+unsigned outputs_from_names(const nlohmann::json& names, const std::string& where);
+ParameterSpec parameter_spec_from_json(const nlohmann::json& json, const std::string& where);
 
 }  // namespace curvebench

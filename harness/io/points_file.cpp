@@ -6,10 +6,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/data_lines.h"
+
 namespace curvebench {
 namespace {
-
-bool is_separator(char c) { return c == ' ' || c == '\t' || c == ',' || c == '\v' || c == '\f'; }
 
 [[noreturn]] void fail(const std::string& name, int line, const std::string& what) {
   throw PointsFileError(name + ":" + std::to_string(line) + ": " + what);
@@ -31,33 +31,10 @@ double parse_coordinate(std::string_view token, const std::string& name, int lin
 
 std::vector<Point2> parse_points(std::string_view text, const std::string& name) {
   std::vector<Point2> points;
-  int line_number = 0;
-  size_t pos = 0;
-  while (pos < text.size()) {
-    size_t end = text.find_first_of("\r\n", pos);
-    if (end == std::string_view::npos) end = text.size();
-    std::string_view line = text.substr(pos, end - pos);
-    pos = end;
-    if (pos < text.size()) {  // one line end: LF, CR or CRLF
-      const bool carriage_return = text[pos++] == '\r';
-      if (carriage_return && pos < text.size() && text[pos] == '\n') ++pos;
-    }
-    ++line_number;
-    if (const size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-
-    std::string_view tokens[2];
-    int count = 0;
-    for (size_t i = 0; i < line.size() && count < 2;) {
-      while (i < line.size() && is_separator(line[i])) ++i;
-      size_t j = i;
-      while (j < line.size() && !is_separator(line[j])) ++j;
-      if (j > i) tokens[count++] = line.substr(i, j - i);
-      i = j;
-    }
-    if (count == 0) continue;
-    if (count == 1) fail(name, line_number, "expected two coordinates 'x y', found one");
-    points.push_back({parse_coordinate(tokens[0], name, line_number), parse_coordinate(tokens[1], name, line_number)});
-  }
+  for_each_data_line(text, [&](const DataLine& line) {
+    if (!line.has_second) fail(name, line.number, "expected two coordinates 'x y', found one");
+    points.push_back({parse_coordinate(line.first, name, line.number), parse_coordinate(line.second, name, line.number)});
+  });
   return points;
 }
 

@@ -83,7 +83,7 @@ ChildState watch_child(ChildProcess& child, bool readable, const ChildLimits& li
     if (n == 0 || (n < 0 && errno != EINTR && errno != EAGAIN)) return ChildState::kOutputEnded;
   }
   if (limits.timeout_seconds > 0 && seconds_since(child.started) >= limits.timeout_seconds) return ChildState::kTimedOut;
-  if (limits.memory_limit_kilobytes > 0 && proc_status_kib(child.pid, "VmRSS") > limits.memory_limit_kilobytes) {
+  if (limits.memory_limit_kilobytes > 0 && process_tree_resident_kib(child.pid) > limits.memory_limit_kilobytes) {
     return ChildState::kOverMemory;
   }
   return ChildState::kRunning;

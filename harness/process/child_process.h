@@ -1,6 +1,6 @@
 // One way to run a child process: forked to run a function, or this executable started
 // again with arguments; its standard output is a pipe to the parent; a time limit and a
-// resident-memory limit (polled from /proc) are enforced by killing it; on exit, its
+// resident-memory limit (polled from /proc, the child and its descendants together) are enforced by killing it; on exit, its
 // getrusage (CPU time, peak resident memory).
 //
 // start_child - In: `body`, run in a forked copy of the caller (which must be single-threaded)

@@ -34,6 +34,12 @@ curvebench_install_browser() {
   curvebench_install_debian_packages chromium chromium-driver
 }
 
+# Slurm and munge: only the tests need them (a single-node cluster on localhost runs a sweep as
+# a job array: tests/python/test_slurm_cluster.py), so only the test command calls this.
+curvebench_install_slurm() {
+  curvebench_install_debian_packages slurm-wlm munge
+}
+
 curvebench_python_env() {
   local requirements="$CURVEBENCH_ROOT/reports/requirements.txt"
   local stamp="$CURVEBENCH_VENV/.requirements.sha256"

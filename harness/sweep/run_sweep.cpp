@@ -15,6 +15,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "external/external_algorithm.h"
 #include "io/ground_truth_json.h"
 #include "io/metrics_json.h"
 #include "io/parameters_json.h"
@@ -31,10 +32,6 @@ using Clock = std::chrono::steady_clock;
 
 double milliseconds_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-std::string run_key(const std::string& algorithm, const Json& parameters, const Json& input) {
-  return Json{{"algorithm", algorithm}, {"parameters", parameters}, {"input", input}}.dump();
 }
 
 // The keys of the rows already in `path`; a partial last line (an interrupted write) is cut.
@@ -179,6 +176,10 @@ std::string perform_run(Json row, const Json& run_parameters, const std::string&
   Reconstruction result;
   try {
     result = algorithm.reconstruct(points, parameters_from_json(run_parameters, algorithm.name() + ".parameters"));
+  } catch (const ExternalProgramFailed& e) {  // the program it runs crashed, as a built-in run can
+    row["status"] = "crash";
+    row["message"] = e.what();
+    return row.dump();
   } catch (const std::exception& e) {
     row["status"] = "error";
     row["message"] = e.what();
@@ -210,6 +211,10 @@ const Algorithm& find_in(const std::vector<const Algorithm*>& algorithms, const 
 }
 
 }  // namespace
+
+std::string run_key(const std::string& algorithm, const nlohmann::ordered_json& parameters, const nlohmann::ordered_json& input) {
+  return Json{{"algorithm", algorithm}, {"parameters", parameters}, {"input", input}}.dump();
+}
 
 std::string perform_sweep_run(const std::string& spec, const std::vector<const Algorithm*>& algorithms) {
   const Json run = Json::parse(spec);

@@ -21,7 +21,9 @@
 //   With `resume`, runs whose (algorithm, parameters, input) already have a row are skipped
 //   (a partial last line left by an interrupted sweep is cut off first); without it an
 //   existing non-empty results file is an error. A shard i of n (0 <= i < n) takes the runs
-//   whose plan index is i modulo n, so n shards together hold every run exactly once.
+//   whose plan index is i modulo n, so n shards together hold every run exactly once
+//   (merge_shards.h puts them back together). A run of an external algorithm whose program
+//   crashes or exits with an error status is a "crash" row (external/external_algorithm.h).
 #pragma once
 
 #include <functional>
@@ -75,6 +77,9 @@ struct SweepSummary {
   int ok = 0, errors = 0, timeouts = 0, crashes = 0;
   double seconds = 0;
 };
+
+// What identifies a run, in a row as in the plan: its algorithm, parameters and input.
+std::string run_key(const std::string& algorithm, const nlohmann::ordered_json& parameters, const nlohmann::ordered_json& input);
 
 SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& options, const SweepEnvironment& environment);
 

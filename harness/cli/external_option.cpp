@@ -1,0 +1,15 @@
+#include "cli/commands.h"
+#include "external/register_external_algorithms.h"
+
+namespace curvebench {
+
+void add_external_option(CLI::App& command, std::vector<std::string>& files) {
+  command.add_option("--external", files,
+                     "JSON file declaring external algorithms: any program as an algorithm (README.md, \"External algorithms\"); repeatable");
+}
+
+void register_external_files(const std::vector<std::string>& files) {
+  for (const std::string& file : files) read_external_algorithms_file(file);
+}
+
+}  // namespace curvebench

@@ -1,0 +1,31 @@
+"""External algorithms that fail, one way each, for the tests of the sweep's isolation.
+
+    python misbehaving.py MODE POINTS OUTPUT
+
+MODE: crash (aborts: killed by SIGABRT), hang (sleeps past any timeout), out-of-range (an
+edge to a point that does not exist), malformed (a line that is not two indices), nothing
+(exits normally without writing), memory (holds 400 MiB resident, then writes a valid chain).
+"""
+import os
+import sys
+import time
+
+mode, points_path, output_path = sys.argv[1:4]
+count = sum(1 for line in open(points_path) if line.strip() and not line.startswith("#"))
+valid_chain = "".join(f"{i} {(i + 1) % count}\n" for i in range(count))
+if mode == "crash":
+    os.abort()
+elif mode == "hang":
+    time.sleep(3600)
+elif mode == "out-of-range":
+    open(output_path, "w").write(f"0 1\n1 {count}\n")
+elif mode == "malformed":
+    open(output_path, "w").write("0 1\n1 two\n")
+elif mode == "memory":
+    held = bytearray(400 * 1024 * 1024)
+    for page in range(0, len(held), 4096):
+        held[page] = 1
+    time.sleep(2)
+    open(output_path, "w").write(valid_chain)
+elif mode != "nothing":
+    sys.exit(f"unknown mode {mode}")

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -282,12 +283,18 @@ SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& options, const
     }
   }
 
+  // The runs' temporary files (an external algorithm's, and its program's) go to a directory of
+  // the sweep's that is removed when the runs are done: a run killed for its time or memory
+  // cannot clean up after itself.
+  const std::string temporary_directory = options.results_path + ".tmp";
+  std::filesystem::create_directories(temporary_directory);
   ProgressReport progress("runs", static_cast<int>(child_positions.size()), options.show_progress);
   run_in_child_processes(
       static_cast<int>(child_positions.size()), options.parallel_jobs, timeout, options.memory_limit_mb * 1024,
       [&](int task) {
         const SweepRun& run = plan.runs[selected[child_positions[task]]];
         const PreparedInput& input = inputs[run.input];
+        ::setenv("TMPDIR", temporary_directory.c_str(), 1);  // in the child only
         if (environment.start_fresh_process) {
           environment.start_fresh_process(Json{{"row", row_header(plan, run, input)},
                                                {"parameters", run.parameters},
@@ -319,6 +326,7 @@ SweepSummary run_sweep(const SweepPlan& plan, const SweepOptions& options, const
         progress.advance(std::to_string(summary.errors) + " errors, " + std::to_string(summary.timeouts) + " timeouts, " +
                          std::to_string(summary.crashes) + " crashes");
       });
+  std::filesystem::remove_all(temporary_directory);
   summary.seconds = milliseconds_since(start) / 1000.0;
   return summary;
 }

@@ -16,7 +16,8 @@
 //   a hash of its settings). An input that cannot be generated makes an "error" row for each
 //   of its runs. A run that throws is an "error" row, one killed by a signal or exiting
 //   without a result a "crash" row, and one past the timeout is killed and a "timeout" row;
-//   each run's peak memory is its child's (getrusage). Progress with an estimate of the time
+//   each run's peak memory is its child's (getrusage). Runs have TMPDIR set to
+//   `<results>.tmp/`, removed when they are done. Progress with an estimate of the time
 //   left goes to stderr.
 //   With `resume`, runs whose (algorithm, parameters, input) already have a row are skipped
 //   (a partial last line left by an interrupted sweep is cut off first); without it an

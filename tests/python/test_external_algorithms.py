@@ -102,6 +102,7 @@ def test_a_sweep_gives_each_failure_its_row_and_goes_on(run, tmp_path, declarati
     assert result.returncode == 0, result.stderr
     rows = [json.loads(line) for line in out.read_text().splitlines()]
     assert len(rows) == 2 * (2 + len(MISBEHAVING) + 1)
+    assert not (tmp_path / "results.jsonl.tmp").exists()  # killed runs' files removed with it
     by_algorithm = {}
     for row in rows:
         by_algorithm.setdefault(row["algorithm"], []).append(row)

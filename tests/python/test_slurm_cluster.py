@@ -154,7 +154,7 @@ def test_a_job_array_sweep_merges_into_the_single_machine_sweep(slurm_cluster, c
     submitted = subprocess.run(
         ["sbatch", f"--array=0-{TASKS - 1}", "--wait", f"--output={work}/task-%a.log", str(SBATCH_SCRIPT), str(config),
          str(shards)],
-        env={**slurm_cluster.environment, "CURVEBENCH_BIN": curvebench_bin}, cwd=work, capture_output=True, text=True,
+        env={**slurm_cluster.environment, "CURVEBENCH_BIN": os.path.abspath(curvebench_bin)}, cwd=work, capture_output=True, text=True,
         timeout=240)
     task_logs = "\n".join(f"--- {log}:\n{log.read_text()}" for log in sorted(work.glob("task-*.log")))
     if submitted.returncode != 0:

@@ -14,8 +14,9 @@ void add_generate_command(CLI::App& app);
 void add_evaluate_command(CLI::App& app);
 void add_sweep_command(CLI::App& app);  // sweep, merge and the hidden sweep-run
 
-// --external FILE (repeatable): files declaring external algorithms (harness/README.md,
-// "External algorithms"), registered before the command runs by register_external_files.
+// --external FILE (repeatable): files declaring external algorithms (README.md, "External
+// algorithms"), or sweep configurations that declare some, registered before the command runs
+// by register_external_files.
 void add_external_option(CLI::App& command, std::vector<std::string>& files);
 void register_external_files(const std::vector<std::string>& files);
 

@@ -5,7 +5,8 @@ namespace curvebench {
 
 void add_external_option(CLI::App& command, std::vector<std::string>& files) {
   command.add_option("--external", files,
-                     "JSON file declaring external algorithms: any program as an algorithm (README.md, \"External algorithms\"); repeatable");
+                     "JSON file declaring external algorithms (any program as an algorithm: README.md, \"External algorithms\"), "
+                     "or a sweep configuration whose external_algorithms to declare; repeatable");
 }
 
 void register_external_files(const std::vector<std::string>& files) {

@@ -40,8 +40,14 @@ std::vector<const ExternalAlgorithm*> read_external_algorithms_file(const std::f
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error(path.string() + ": not JSON: " + e.what());
   }
-  if (declarations.is_object()) declarations = nlohmann::ordered_json::array({declarations});
-  return register_external_algorithms(declarations, std::filesystem::absolute(path).parent_path(), path.string());
+  std::string where = path.string();
+  if (declarations.is_object() && declarations.contains("inputs")) {  // a sweep configuration
+    declarations = declarations.value("external_algorithms", nlohmann::ordered_json::array());
+    where += ": external_algorithms";
+  } else if (declarations.is_object()) {
+    declarations = nlohmann::ordered_json::array({declarations});
+  }
+  return register_external_algorithms(declarations, std::filesystem::absolute(path).parent_path(), where);
 }
 
 }  // namespace curvebench

@@ -70,12 +70,13 @@ gallery_shape rose-20pct-outliers --family rose --epsilon 0.2 --outliers 0.2 --s
 for points in "${own_points[@]}"; do
   cp "$points" "$out/gallery/"
 done
-"$curvebench" list --json > "$out/catalogue.json"
-algorithms=$("$curvebench" list | grep -v '^ ')
+# The configuration's external algorithms (if it declares any) are catalogued and drawn too.
+"$curvebench" list --json --external "$config" > "$out/catalogue.json"
+algorithms=$("$curvebench" list --external "$config" | grep -v '^ ')
 for points in "$out"/gallery/*; do
   for algorithm in $algorithms; do
     # A failed reconstruction still writes its error record, which the gallery shows.
-    "$curvebench" reconstruct --algorithm "$algorithm" --input "$points" \
+    "$curvebench" reconstruct --external "$config" --algorithm "$algorithm" --input "$points" \
       --output "$out/gallery/$(basename "${points%.*}").$algorithm.json" 2>/dev/null || true
   done
 done

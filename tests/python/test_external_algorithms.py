@@ -18,13 +18,22 @@ SCRIPTS = pathlib.Path(__file__).resolve().parent / "external"
 # The README's example declaration, run with this interpreter (which has scipy).
 NN_CHAIN = {**json.loads((SCRIPTS / "nn_chain.json").read_text())}
 NN_CHAIN["command"] = [sys.executable] + NN_CHAIN["command"][1:]
-MISBEHAVING = ["crash", "hang", "out-of-range", "malformed", "nothing", "memory"]
+MISBEHAVING = ["crash", "hang", "out-of-range", "malformed", "nothing", "memory", "json-cut", "json-out-of-range",
+               "json-error"]
 
 
 def misbehaving(mode):
     return {"name": f"bad-{mode}", "citation": f"an external algorithm that fails: {mode}",
             "command": [sys.executable, "{dir}/misbehaving.py", mode, "{points}", "{output}"],
-            "outputs": ["curve"], "output_format": "edges"}
+            "outputs": ["curve"], "output_format": "reconstruction-json" if mode.startswith("json") else "edges"}
+
+
+def midpoint_polygon(output_format):
+    vertices = ["--vertices", "{vertices}"] if output_format == "edges" else []
+    return {"name": f"midpoints-{output_format}", "citation": "midpoint polygon in angular order (a test)",
+            "command": [sys.executable, "{dir}/midpoint_polygon.py", "{points}", "{output}", "--format", output_format,
+                        *vertices],
+            "outputs": ["new_curve"], "output_format": output_format}
 
 
 @pytest.fixture
@@ -35,7 +44,8 @@ def declarations(tmp_path):
     for script in SCRIPTS.glob("*.py"):  # {dir} is the declaring file's directory
         shutil.copy(script, directory)
     path = directory / "declarations.json"
-    path.write_text(json.dumps([NN_CHAIN] + [misbehaving(mode) for mode in MISBEHAVING]))
+    path.write_text(json.dumps([NN_CHAIN] + [misbehaving(mode) for mode in MISBEHAVING]
+                               + [midpoint_polygon(output_format) for output_format in ("edges", "reconstruction-json")]))
     return path
 
 
@@ -63,11 +73,27 @@ def test_reconstruct_runs_the_program_and_checks_its_parameters(run, tmp_path, d
     assert entry["outputs"] == ["curve"] and entry["parameters"][0]["default"] == 4
 
 
+@pytest.mark.parametrize("output_format", ["edges", "reconstruction-json"])
+def test_a_program_with_vertices_of_its_own_writes_them_in_either_format(run, tmp_path, declarations, output_format):
+    points, truth, out, metrics = (tmp_path / name for name in ("rose.xy", "rose.truth.json", "r.json", "m.json"))
+    assert run("generate", "--family", "rose", "--epsilon", "0.2", "--points", points, "--truth", truth).returncode == 0
+    result = run("reconstruct", "--external", declarations, "--algorithm", f"midpoints-{output_format}",
+                 "--input", points, "--output", out)
+    assert result.returncode == 0, result.stderr
+    curve = json.loads(out.read_text())["curve"]
+    count = len(points.read_text().splitlines()) - 1
+    assert len(curve["vertices"]) == count and len(curve["edges"]) == count
+    assert run("evaluate", "--truth", truth, "--result", out, "--output", metrics).returncode == 0
+    scores = json.loads(metrics.read_text())["metrics"]
+    assert scores["closed_components"] == 1 and scores["hausdorff"] < 0.02 and "exact" not in scores
+
+
 @pytest.mark.parametrize("declaration, message", [
     ({**NN_CHAIN, "command": ["x", "{points}"]}, "has no {output}"),
     ({**NN_CHAIN, "command": ["x", "{points}", "{output}", "{k}"]}, "names {k}, which is none of"),
     ({**NN_CHAIN, "output_format": "csv"}, "output_format must be"),
     ({**NN_CHAIN, "outputs": ["curve", "medial_axis"]}, "the edges format holds only a curve"),
+    ({**NN_CHAIN, "outputs": ["new_curve"]}, "{vertices} is for, and needed by, a \"new_curve\" in the edges format"),
     ({**NN_CHAIN, "name": "labeling"}, "two algorithms are named 'labeling'"),
     ({**NN_CHAIN, "parameters": [{"name": "neighbours", "type": "integer", "default": 0, "minimum": 1,
                                   "description": "d"}]}, "the default 0 is not a whole number >= 1"),
@@ -117,6 +143,9 @@ def test_a_sweep_gives_each_failure_its_row_and_goes_on(run, tmp_path, declarati
         "malformed": ("error", "bad-malformed: {output}:2: 'two' is not a vertex index"),
         "nothing": ("error", "bad-nothing: the program exited normally but wrote nothing to {output}"),
         "memory": ("crash", "killed: resident memory over the limit of 200 MiB"),
+        "json-cut": ("error", "bad-json-cut: {output}: not JSON: [json.exception.parse_error.101] parse error at line 3"),
+        "json-out-of-range": ("error", "bad-json-out-of-range: {output}: curve.edges[1] is [1, "),
+        "json-error": ("error", "bad-json-error: too few points for this method"),
     }
     for mode, (status, message) in expected.items():
         for row in by_algorithm[f"bad-{mode}"]:

@@ -4,8 +4,11 @@
 
 MODE: crash (aborts: killed by SIGABRT), hang (sleeps past any timeout), out-of-range (an
 edge to a point that does not exist), malformed (a line that is not two indices), nothing
-(exits normally without writing), memory (holds 400 MiB resident, then writes a valid chain).
+(exits normally without writing), memory (holds 400 MiB resident, then writes a valid chain);
+as a reconstruction JSON: json-cut (ends inside line 3), json-out-of-range (an edge to a
+point that does not exist), json-error (reports an error in the JSON).
 """
+import json
 import os
 import sys
 import time
@@ -27,5 +30,11 @@ elif mode == "memory":
         held[page] = 1
     time.sleep(2)
     open(output_path, "w").write(valid_chain)
+elif mode == "json-cut":
+    open(output_path, "w").write('{"curve": {\n  "edges": [[0, 1],\n  [1, ')
+elif mode == "json-out-of-range":
+    open(output_path, "w").write(json.dumps({"curve": {"edges": [[0, 1], [1, count]]}}))
+elif mode == "json-error":
+    open(output_path, "w").write(json.dumps({"status": "error", "message": "too few points for this method"}))
 elif mode != "nothing":
     sys.exit(f"unknown mode {mode}")

@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -11,8 +10,8 @@
 #include "external/register_external_algorithms.h"
 #include "generators/generate.h"
 #include "io/generated_input_files.h"
-#include "process/child_process.h"
 #include "io/points_file.h"
+#include "process/child_process.h"
 #include "sweep/merge_shards.h"
 #include "sweep/run_in_child_processes.h"
 #include "sweep/run_sweep.h"
@@ -57,11 +56,7 @@ LoadedConfiguration load_configuration(const std::string& path, const std::vecto
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error(path + ": not JSON: " + e.what());
   }
-  std::vector<const ExternalAlgorithm*> external;
-  if (config.is_object() && config.contains("external_algorithms")) {
-    external = register_external_algorithms(config.at("external_algorithms"), std::filesystem::path(path).parent_path(),
-                                            path + ": external_algorithms");
-  }
+  std::vector<const ExternalAlgorithm*> external = read_external_algorithms_file(path);  // the configuration's own
   for (const std::string& file : external_files) {
     const auto from_file = read_external_algorithms_file(file);
     external.insert(external.end(), from_file.begin(), from_file.end());

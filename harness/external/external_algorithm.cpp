@@ -96,17 +96,17 @@ class TemporaryDirectory {
 // Runs `arguments` (no shell) with standard output and error collected; throws
 // ExternalProgramFailed unless it exits with status 0.
 void run_program(const std::vector<std::string>& arguments, const std::string& algorithm) {
-  const ChildExit end = run_child(start_child([&] {
-                                    ::dup2(STDOUT_FILENO, STDERR_FILENO);
-                                    std::vector<char*> argv;
-                                    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
-                                    argv.push_back(nullptr);
-                                    ::execvp(argv[0], argv.data());
-                                    const std::string why = kCannotRun + ("'" + arguments[0] + "': ") + std::strerror(errno) + "\n";
-                                    [[maybe_unused]] const ssize_t ignored = ::write(STDOUT_FILENO, why.data(), why.size());
-                                    ::_exit(127);
-                                  }),
-                                  ChildLimits{});
+  const auto exec_program = [&] {
+    ::dup2(STDOUT_FILENO, STDERR_FILENO);
+    std::vector<char*> argv;
+    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execvp(argv[0], argv.data());
+    const std::string why = kCannotRun + ("'" + arguments[0] + "': ") + std::strerror(errno) + "\n";
+    [[maybe_unused]] const ssize_t ignored = ::write(STDOUT_FILENO, why.data(), why.size());
+    ::_exit(127);
+  };
+  const ChildExit end = run_child(start_child(exec_program), ChildLimits{});  // the sweep's limits cover it from outside
   const std::string last_line = last_output_line(end.output);
   const std::string quoted = last_line.empty() ? "" : "; its last output: " + last_line;
   if (WIFSIGNALED(end.wait_status)) {

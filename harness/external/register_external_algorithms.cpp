@@ -41,11 +41,11 @@ std::vector<const ExternalAlgorithm*> read_external_algorithms_file(const std::f
     throw std::runtime_error(path.string() + ": not JSON: " + e.what());
   }
   std::string where = path.string();
-  if (declarations.is_object() && declarations.contains("inputs")) {  // a sweep configuration
+  if (declarations.is_object() && (declarations.contains("name") || declarations.contains("command"))) {
+    declarations = nlohmann::ordered_json::array({declarations});
+  } else if (declarations.is_object()) {  // a sweep configuration
     declarations = declarations.value("external_algorithms", nlohmann::ordered_json::array());
     where += ": external_algorithms";
-  } else if (declarations.is_object()) {
-    declarations = nlohmann::ordered_json::array({declarations});
   }
   return register_external_algorithms(declarations, std::filesystem::absolute(path).parent_path(), where);
 }

@@ -5,7 +5,8 @@
 //      (strings, relative to `directory`); a declaration file holds one declaration or a list of
 //      them, and its own directory is the {dir} of its declarations. `where` names the source
 //      in messages. read_external_algorithms_file: the same for one file, which may also be a
-//      sweep configuration (an object with "inputs"): then its "external_algorithms", if any.
+//      sweep configuration (an object with neither "name" nor "command"): then its
+//      "external_algorithms", if any.
 // Out: each algorithm registered (core/registry.h), so that every command finds it by name
 //      like a built-in one, and `"algorithms": "all"` includes it; the registered algorithms,
 //      in the order declared. Throws std::runtime_error naming the file and the declaration

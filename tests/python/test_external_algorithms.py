@@ -90,6 +90,7 @@ def test_a_program_with_vertices_of_its_own_writes_them_in_either_format(run, tm
 
 @pytest.mark.parametrize("declaration, message", [
     ({**NN_CHAIN, "command": ["x", "{points}"]}, "has no {output}"),
+    ({key: value for key, value in NN_CHAIN.items() if key != "command"}, "command must be a non-empty list of strings"),
     ({**NN_CHAIN, "command": ["x", "{points}", "{output}", "{k}"]}, "names {k}, which is none of"),
     ({**NN_CHAIN, "output_format": "csv"}, "output_format must be"),
     ({**NN_CHAIN, "outputs": ["curve", "medial_axis"]}, "the edges format holds only a curve"),
@@ -164,11 +165,12 @@ def test_an_external_algorithm_is_in_the_report(run, tmp_path, declarations):
     results = tmp_path / "results.jsonl"
     assert run("sweep", config, "--out", results, "--quiet", timeout=120).returncode == 0
     catalogue = tmp_path / "catalogue.json"
-    listed = run("list", "--json", "--external", declarations)
+    listed = run("list", "--json", "--external", config)  # as main.sh writes it: the configuration's algorithms
     catalogue.write_text(listed.stdout)
     report = subprocess.run([sys.executable, "-m", "reports", "--out", tmp_path / "report", "--results", results,
                              "--catalogue", catalogue], cwd=ROOT, capture_output=True, text=True, timeout=300)
     assert report.returncode == 0, report.stderr
+    assert "nn-chain" in {entry["name"] for entry in json.loads(listed.stdout)}
     page = (tmp_path / "report" / "index.html").read_text()
     assert "nn-chain" in page
     assert "nn-chain" in (tmp_path / "report" / "success_vs_epsilon.svg").read_text()

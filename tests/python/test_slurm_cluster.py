@@ -94,7 +94,7 @@ class SlurmCluster:
         ]) + "\n")
         conf = str(d / "slurm.conf")
         self.spawn(["slurmctld", "-D", "-i", "-f", conf])
-        self.spawn(["slurmd", "-D", "-f", conf])
+        self.spawn(["slurmd", "-D", "-f", conf, "-N", host])  # the node by its configured name
 
         def node_idle():
             states = subprocess.run(["sinfo", "--noheader", "--format=%T"], env=self.environment, capture_output=True,

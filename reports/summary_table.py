@@ -1,163 +1,439 @@
-"""Which method is best under which condition: one line per condition the results cover, each
-naming the measure, the best algorithm, the runner-up and every algorithm's value."""
+"""Which method is best under which condition.
+
+In:  the sweep rows (and the scaling benchmark, for speed and memory).
+Out: per condition of reports/conditions.py, one line per accuracy metric (L2 error, edge F1,
+     curve recall, Hausdorff): every method's median, interquartile range and share of runs
+     within the metric's tolerance of the best on the same input (robust_statistics.py), the
+     best and the runner-up, their head-to-head count on the inputs both ran, and whether that
+     separates them; then whether the metrics agree. Lines for the medial axis and the dominant
+     points follow, and for speed and memory. A method run with a parameter grid takes part
+     twice: at its default and at the grid's best setting under the condition (chosen by the
+     condition's first defined metric of L2 error, curve recall, Hausdorff).
+"""
 from __future__ import annotations
 
 import collections
 import dataclasses
 import html
-from typing import Callable
+import json
+import math
 
 import numpy as np
 
-from reports.accuracy_figures import corner_rows, density_rows, epsilon_rows, noise_rows, outlier_rows, \
-    right_topology
+from reports.conditions import CONDITIONS, condition_rows
+from reports.parameter_settings import changed_values_text, default_setting, setting_key, settings_by_algorithm
+from reports.robust_statistics import Comparison, HeadToHead, Metric, compare, quartiles
 from reports.scaling_results import DELAUNAY, ScalingSuite
-from reports.style import format_values, sorted_algorithms
+from reports.style import sorted_algorithms
 from reports.sweep_results import SweepRow
+
+ACCURACY_METRICS = [
+    Metric("l2_error", "L2 error", higher_is_better=False, tolerance=0.01),
+    Metric("edge_f1", "edge F1", higher_is_better=True, tolerance=0.02),
+    Metric("curve_recall", "curve recall", higher_is_better=True, tolerance=0.02),
+    Metric("hausdorff", "Hausdorff / diagonal", higher_is_better=False, tolerance=0.005),
+]
+# The metric that picks a grid's best setting: the first of these the condition defines (L2 is
+# undefined on open curves).
+SETTING_CHOICE_METRICS = ["l2_error", "curve_recall", "hausdorff"]
+MEDIAL_AXIS_METRIC = Metric("medial_axis_hausdorff", "medial-axis Hausdorff / diagonal", higher_is_better=False,
+                            tolerance=0.005)
+# FOM spans orders of magnitude: two runs tie within 5% of the larger.
+FIGURE_OF_MERIT = Metric("figure_of_merit", "FOM = CR / ISE", higher_is_better=True, tolerance=0.05, relative=True)
+COMPRESSION_RATIO = Metric("compression_ratio", "CR", higher_is_better=True, tolerance=0.05, relative=True)
+INTEGRAL_SQUARE_ERROR = Metric("integral_square_error", "ISE", higher_is_better=False, tolerance=0.05, relative=True)
+HEATMAP_FIGURE = "metrics_by_condition"
+
+
+def input_key(r: SweepRow) -> str:
+    return json.dumps(r.settings, sort_keys=True)
+
+
+def run_value(r: SweepRow, metric: Metric) -> float | None:
+    """The run's value of the metric; a failed run is the metric's worst value; None where the
+    finished run does not define it."""
+    if not r.ok:
+        return metric.failure
+    if metric is FIGURE_OF_MERIT and r.metric("integral_square_error") == 0:
+        return math.inf  # the polygon through the dominant points passes through every sample
+    return r.metric(metric.key)
+
+
+@dataclasses.dataclass
+class Variant:
+    """One method as the summary shows it: an algorithm at one parameter setting."""
+
+    label: str
+    algorithm: str
+    rows: list[SweepRow]
+    default: bool  # the algorithm's default setting (also true for a method without parameters grid)
+
+    def values(self, metric: Metric, defined_anywhere: set[tuple[str, str]]) -> dict[str, float]:
+        """input -> value; empty when the metric is undefined for this method."""
+        if (self.algorithm, metric.key) not in defined_anywhere:
+            return {}
+        values = {}
+        for r in self.rows:
+            v = run_value(r, metric)
+            if v is not None:
+                values[input_key(r)] = v
+        return values
+
+
+def defined_metrics(rows: list[SweepRow], metrics: list[Metric]) -> set[tuple[str, str]]:
+    """(algorithm, metric) pairs with a value on at least one finished run: a method whose every
+    finished run leaves a metric null (edge F1 of a method with vertices of its own) is not scored
+    on it, while its failed runs still count against it where it is defined."""
+    return {(r.algorithm, m.key) for r in rows for m in metrics if r.ok and r.metric(m.key) is not None}
+
+
+def condition_variants(rows: list[SweepRow], all_settings: dict[str, list[dict]], choice: Metric,
+                       defined_anywhere: set[tuple[str, str]]) -> list[Variant]:
+    """Every algorithm of `rows` once, and a method with a grid twice: at its default and at its
+    best setting here by median of `choice` (the default only, labelled so, when it is the best)."""
+    variants = []
+    for algorithm in sorted_algorithms({r.algorithm for r in rows}):
+        of_algorithm = [r for r in rows if r.algorithm == algorithm]
+        settings = all_settings[algorithm]
+        if len(settings) == 1:
+            variants.append(Variant(algorithm, algorithm, of_algorithm, True))
+            continue
+        default = default_setting(algorithm, settings)
+        by_setting = collections.defaultdict(list)
+        for r in of_algorithm:
+            by_setting[setting_key(r.parameters)].append(r)
+        sign = -1 if choice.higher_is_better else 1
+
+        def median_of(key: str) -> float:
+            candidate = Variant("", algorithm, by_setting[key], False).values(choice, defined_anywhere)
+            return sign * quartiles(list(candidate.values()))[0] if candidate else math.inf
+
+        order = [setting_key(s) for s in settings if setting_key(s) in by_setting]
+        best = min(order, key=median_of)  # ties keep the setting written first
+        default_key = setting_key(default)
+        count = len(order)
+        if best == default_key:
+            variants.append(Variant(f"{algorithm} (default, best of {count} settings)", algorithm,
+                                    by_setting[default_key], True))
+            continue
+        if default_key in by_setting:
+            variants.append(Variant(f"{algorithm} (default)", algorithm, by_setting[default_key], True))
+        changed = changed_values_text(json.loads(best), default)
+        variants.append(Variant(f"{algorithm} ({changed}; best of {count})", algorithm, by_setting[best], False))
+    return variants
 
 
 @dataclasses.dataclass
 class SummaryLine:
+    """One measure under one condition."""
+
     condition: str
     measure: str
-    values: dict[str, float]  # per algorithm
     higher_is_better: bool
-    value_format: str
+    runs_text: str
+    best: str | None
+    runner_up: str | None
+    separated: bool
+    verdict: str
+    cells: dict[str, str]  # what the page shows for each method: value and spread
+    comparison: Comparison | None = None
+    figures: tuple[str, ...] = ()
+    rule: str = ""
 
-    def ranking(self) -> list[str]:
-        return sorted(self.values, key=lambda a: (-self.values[a] if self.higher_is_better else self.values[a], a))
 
-    def formatted(self, algorithm: str) -> str:
-        return self.value_format.format(self.values[algorithm])
+@dataclasses.dataclass
+class ConditionSummary:
+    name: str
+    rule: str
+    figures: tuple[str, ...]
+    runs: int
+    inputs: int
+    lines: list[SummaryLine]
+    agreement: str
+    variants: list[Variant]
 
 
-def _mean_by_algorithm(rows: list[SweepRow], value: Callable[[SweepRow], float | None]) -> dict[str, float]:
-    """Mean of `value` per algorithm; a run without a result counts as `value` None and is skipped."""
-    values = collections.defaultdict(list)
+def _statistics_cell(comparison: Comparison, label: str) -> str:
+    s = comparison.statistics[label]
+    m = comparison.metric
+    failed = f", {s.failed} failed" if s.failed else ""
+    return (f"{m.format(s.median)} [{m.format(s.lower_quartile)}, {m.format(s.upper_quartile)}]; "
+            f"{100 * s.within_tolerance:.0f}% of {s.runs} runs{failed} within {m.tolerance_text()} of the best")
+
+
+def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str | None, str | None, bool, str]:
+    """(best, runner-up, separated, why): the best by median (then by share near the best), the
+    runner-up the next method of another algorithm, separated when the best is better than the
+    runner-up on more of their shared inputs than it is worse."""
+    ranking = comparison.ranking
+    if not ranking:
+        return None, None, False, "no method reports it here"
+    best = ranking[0]
+    others = [label for label in ranking[1:] if algorithm_of[label] != algorithm_of[best]]
+    if not others:
+        return best, None, False, f"not separated: only {algorithm_of[best]} reports it here"
+    runner_up = others[0]
+    h: HeadToHead = comparison.pairs[(best, runner_up)]
+    tolerance = comparison.metric.tolerance_text()
+    if h.shared == 0:
+        return best, runner_up, False, f"not separated: {best} and {runner_up} ran no input in common"
+    if h.wins > h.losses:
+        return best, runner_up, True, (f"{best} is better than {runner_up} by more than {tolerance} on {h.wins} of "
+                                       f"{h.shared} shared inputs, worse on {h.losses}")
+    if h.wins == h.losses == 0:
+        return best, runner_up, False, (f"not separated: {best} and {runner_up} are within {tolerance} of each "
+                                        f"other on all {h.shared} shared inputs")
+    return best, runner_up, False, (f"not separated: {best} has the better median, but is better than {runner_up} "
+                                    f"on {h.wins} of {h.shared} shared inputs and worse on {h.losses}")
+
+
+def _runs_text(rows: list[SweepRow]) -> str:
+    failed = sum(1 for r in rows if not r.ok)
+    inputs = len({input_key(r) for r in rows})
+    return f"{len(rows)} runs on {inputs} inputs" + (f" ({failed} failed)" if failed else "")
+
+
+def _accuracy_line(condition: str, metric: Metric, variants: list[Variant], defined_anywhere) -> SummaryLine | None:
+    values = {v.label: v.values(metric, defined_anywhere) for v in variants}
+    values = {label: by_input for label, by_input in values.items() if by_input}
+    if not values:
+        return None
+    comparison = compare(values, metric)
+    algorithm_of = {v.label: v.algorithm for v in variants}
+    best, runner_up, separated, why = verdict(comparison, algorithm_of)
+    scored = [r for v in variants if v.label in values for r in v.rows]
+    return SummaryLine(condition, metric.name, metric.higher_is_better, _runs_text(scored), best, runner_up, separated,
+                       why, {label: _statistics_cell(comparison, label) for label in values}, comparison)
+
+
+def agreement_text(lines: list[SummaryLine], algorithm_of: dict[str, str]) -> str:
+    """Whether the metrics that separate the methods name the same one."""
+    separated = [line for line in lines if line.separated]
+    unseparated = [line.measure for line in lines if not line.separated]
+    rest = f"; {', '.join(unseparated)} do{'es' if len(unseparated) == 1 else ''} not separate" if unseparated else ""
+    if not separated:
+        return "No metric separates the best method from the runner-up here."
+    winners = {algorithm_of[line.best] for line in separated}
+    if len(winners) == 1:
+        return f"The metrics agree: {winners.pop()} is best on {', '.join(line.measure for line in separated)}{rest}."
+    listed = "; ".join(f"{line.measure}: {line.best}" for line in separated)
+    return f"The metrics disagree: {listed}{rest}."
+
+
+def setting_choice_metric(rows: list[SweepRow]) -> Metric | None:
+    """The first of SETTING_CHOICE_METRICS some finished run of `rows` defines."""
+    return next((m for key in SETTING_CHOICE_METRICS for m in ACCURACY_METRICS
+                 if m.key == key and any(r.ok and r.metric(key) is not None for r in rows)), None)
+
+
+def condition_summaries(rows: list[SweepRow]) -> list[ConditionSummary]:
+    all_settings = settings_by_algorithm(rows)
+    defined_anywhere = defined_metrics(rows, ACCURACY_METRICS)
+    summaries = []
+    for condition in CONDITIONS:
+        chosen = condition_rows(rows).get(condition.name)
+        if not chosen:
+            continue
+        choice = setting_choice_metric(chosen)
+        if choice is None:
+            continue
+        variants = condition_variants(chosen, all_settings, choice, defined_anywhere)
+        lines = []
+        for metric in ACCURACY_METRICS:
+            line = _accuracy_line(condition.name, metric, variants, defined_anywhere)
+            if line is not None:
+                line.figures = (HEATMAP_FIGURE,) + condition.figures
+                line.rule = condition.rule
+                lines.append(line)
+        algorithm_of = {v.label: v.algorithm for v in variants}
+        summaries.append(ConditionSummary(condition.name, condition.rule, (HEATMAP_FIGURE,) + condition.figures,
+                                          len(chosen), len({input_key(r) for r in chosen}), lines,
+                                          agreement_text(lines, algorithm_of), variants))
+    return summaries
+
+
+def medial_axis_line(rows: list[SweepRow]) -> SummaryLine | None:
+    defined_anywhere = defined_metrics(rows, [MEDIAL_AXIS_METRIC])
+    chosen = [r for r in rows if any(r.algorithm == a for a, _ in defined_anywhere)]
+    if not chosen:
+        return None
+    variants = condition_variants(chosen, settings_by_algorithm(rows), MEDIAL_AXIS_METRIC, defined_anywhere)
+    line = _accuracy_line("Medial axis (every run of a method that draws one)", MEDIAL_AXIS_METRIC, variants,
+                          defined_anywhere)
+    if line is not None:
+        line.rule = "every run of the methods that produce an interior medial axis, on closed true curves"
+    return line
+
+
+@dataclasses.dataclass
+class DominantPointStatistics:
+    compression_ratio: tuple[float, float, float]  # median, lower and upper quartile
+    integral_square_error: tuple[float, float, float]
+    runs: int
+
+    @property
+    def figure_of_merit(self) -> float:
+        """FOM from the medians: median CR / median ISE (infinite for a median ISE of 0)."""
+        median_ise = self.integral_square_error[0]
+        return math.inf if median_ise == 0 else self.compression_ratio[0] / median_ise
+
+
+def dominant_point_statistics(rows: list[SweepRow]) -> dict[str, DominantPointStatistics]:
+    """Per algorithm, over its finished runs that define both: CR and ISE quartiles."""
+    pairs = collections.defaultdict(list)
     for r in rows:
-        v = value(r) if r.ok else None
-        if v is not None:
-            values[r.algorithm].append(v)
-    return {algorithm: float(np.mean(v)) for algorithm, v in values.items()}
+        cr, ise = r.metric("compression_ratio"), r.metric("integral_square_error")
+        if r.ok and cr is not None and ise is not None:
+            pairs[r.algorithm].append((cr, ise))
+    return {algorithm: DominantPointStatistics(quartiles([cr for cr, _ in found]), quartiles([i for _, i in found]),
+                                               len(found))
+            for algorithm, found in pairs.items()}
 
 
-def _mean_l2_line(experiment: str, rows: list[SweepRow]) -> SummaryLine:
-    """The mean L2 error of each algorithm over these rows (lower is better)."""
-    return SummaryLine(experiment, "mean L2 error", _mean_by_algorithm(rows, lambda r: r.metric("l2_error")),
-                       False, "{:.2e}")
-
-
-def _success_share(rows: list[SweepRow], success: Callable[[SweepRow], bool | None]) -> dict[str, float]:
-    """Share of runs per algorithm that succeed; failed runs count as unsuccessful, runs for which
-    success is undefined (None) are skipped."""
-    outcomes = collections.defaultdict(list)
+def dominant_points_line(rows: list[SweepRow]) -> SummaryLine | None:
+    """FOM from the medians of CR and ISE, not the mean of per-run FOMs: ISE is near 0 on some
+    runs, so one run's CR / ISE can outweigh all the others in a mean."""
+    statistics = dominant_point_statistics(rows)
+    if not statistics:
+        return None
+    ranking = sorted(statistics, key=lambda a: (-statistics[a].figure_of_merit, a))
+    by_algorithm = collections.defaultdict(dict)
     for r in rows:
-        outcome = success(r) if r.ok else False
-        if outcome is not None:
-            outcomes[r.algorithm].append(float(outcome))
-    return {algorithm: 100 * float(np.mean(o)) for algorithm, o in outcomes.items()}
+        if r.algorithm in statistics:
+            v = run_value(r, FIGURE_OF_MERIT)
+            if v is not None:
+                by_algorithm[r.algorithm][input_key(r)] = v
+    comparison = compare(dict(by_algorithm), FIGURE_OF_MERIT)
+    comparison.ranking = ranking
+    best, runner_up, separated, why = verdict(comparison, {a: a for a in ranking})
+    cells = {}
+    for algorithm, s in statistics.items():
+        cr, ise = s.compression_ratio, s.integral_square_error
+        cells[algorithm] = (f"FOM {s.figure_of_merit:.3g} = CR {cr[0]:.3g} [{cr[1]:.3g}, {cr[2]:.3g}] / "
+                            f"ISE {ise[0]:.3g} [{ise[1]:.3g}, {ise[2]:.3g}] over {s.runs} runs")
+    chosen = [r for r in rows if r.algorithm in statistics]
+    line = SummaryLine("Dominant points (every run of a method that finds them)",
+                       "FOM from the medians: median CR / median ISE", True, _runs_text(chosen), best, runner_up,
+                       separated, why + " (head to head on each run's FOM)", cells, comparison)
+    line.rule = ("every run of the methods that produce dominant points; FOM is taken from the medians of CR and ISE "
+                 "because ISE is near 0 on some runs, where one run's CR / ISE would decide a mean of ratios")
+    return line
 
 
-def _largest_all_exact_epsilon(rows: list[SweepRow]) -> dict[str, float]:
-    """Per algorithm, the largest epsilon up to which every run (all smaller epsilons too) is exact."""
-    result = {}
-    for algorithm in {r.algorithm for r in rows}:
-        runs = [r for r in rows if r.algorithm == algorithm]
-        if any(r.ok and r.metric("exact") is None for r in runs):
-            continue  # not an interpolating method: exactness is undefined
-        largest = 0.0
-        for epsilon in sorted({r.epsilon for r in runs}):
-            if all(r.ok and r.metric("exact") == 1 for r in runs if r.epsilon == epsilon):
-                largest = epsilon
-            else:
-                break
-        result[algorithm] = largest
-    return result
-
-
-def summary_lines(rows: list[SweepRow], suite: ScalingSuite | None) -> list[SummaryLine]:
+def speed_lines(suite: ScalingSuite) -> list[SummaryLine]:
     lines = []
-    clean = epsilon_rows(rows)
-    if clean:
-        lines.append(SummaryLine("Clean smooth curves (epsilon-samples)",
-                                 f"largest epsilon (of {format_values({r.epsilon for r in clean})}) up to which "
-                                 "every run is exact", _largest_all_exact_epsilon(clean), True, "{:.3g}"))
-        single = [r for r in clean if r.true_curves == 1]
-        several = [r for r in clean if (r.true_curves or 0) > 1]
-        if single:
-            lines.append(SummaryLine("One curve, all epsilons", "runs with the right topology (%)",
-                                     _success_share(single, right_topology), True, "{:.0f}"))
-        if several:
-            lines.append(SummaryLine("Several curves", "runs with the right topology (%)",
-                                     _success_share(several, right_topology), True, "{:.0f}"))
-    dense = density_rows(rows)
-    if dense:
-        shapes = {r.shape for r in dense}
-        sparsest = {shape: min(r.sampling_level for r in dense if r.shape == shape) for shape in shapes}
-        densest = {shape: max(r.sampling_level for r in dense if r.shape == shape) for shape in shapes}
-        lines.append(_mean_l2_line("Sparse sampling (sparsest setting of each shape)",
-                                   [r for r in dense if r.sampling_level == sparsest[r.shape]]))
-        lines.append(_mean_l2_line("Dense sampling (densest setting of each shape)",
-                                   [r for r in dense if r.sampling_level == densest[r.shape]]))
-    corners = corner_rows(rows)
-    if corners:
-        families = ", ".join(sorted({r.family for r in corners}))
-        lines.append(SummaryLine(f"Sharp corners ({families}), all epsilons", "exact runs (%)",
-                                 _success_share(corners, lambda r: None if r.metric("exact") is None
-                                                else r.metric("exact") == 1), True, "{:.0f}"))
-    noisy = noise_rows(rows)
-    if noisy:
-        strongest = max(r.noise for r in noisy)
-        lines.append(_mean_l2_line(f"Noise (strongest level, {strongest:g})",
-                                   [r for r in noisy if r.noise == strongest]))
-    with_outliers = outlier_rows(rows)
-    if with_outliers:
-        most = max(r.outliers for r in with_outliers)
-        lines.append(_mean_l2_line(f"Outliers (most, {100 * most:g}%)",
-                                   [r for r in with_outliers if r.outliers == most]))
-    medial = _mean_by_algorithm(rows, lambda r: r.metric("medial_axis_hausdorff"))
-    if medial:
-        lines.append(SummaryLine("Medial axis", "mean Hausdorff distance to the true axis / diagonal", medial, False,
-                                 "{:.3f}"))
-    figure_of_merit = _mean_by_algorithm(rows, lambda r: r.metric("figure_of_merit"))
-    if figure_of_merit:
-        lines.append(SummaryLine("Dominant points", "mean FOM = CR / ISE", figure_of_merit, True, "{:.3g}"))
-    if suite is not None:
-        for input_name in suite.inputs():
-            runs = [r for r in suite.runs if r.input == input_name and r.skip_reason is None and r.algorithm != DELAUNAY]
-            if not runs:
+    for input_name in suite.inputs():
+        runs = [r for r in suite.runs if r.input == input_name and r.skip_reason is None and r.algorithm != DELAUNAY]
+        if not runs:
+            continue
+        largest = max(r.n for r in runs)
+        at_largest = [r for r in runs if r.n == largest]
+        for condition, measure, value, unit, fmt in [
+                (f"Speed, {input_name} curve, n = {largest:,}", "time / bare Delaunay time (benchmark)",
+                 lambda r: r.times_delaunay, "x", "{:.2f}x"),
+                (f"Memory, {input_name} curve, n = {largest:,}", "peak MiB of the reconstruction (benchmark)",
+                 lambda r: r.reconstruction_mib, "MiB", "{:.1f}")]:
+            by_algorithm = collections.defaultdict(list)
+            for r in at_largest:
+                if value(r) is not None:
+                    by_algorithm[r.algorithm].append(value(r))
+            if not by_algorithm:
                 continue
-            largest = max(r.n for r in runs)
-            at_largest = [r for r in runs if r.n == largest]
-            lines.append(SummaryLine(f"Speed, {input_name} curve, n = {largest:,}", "time / bare Delaunay time",
-                                     {r.algorithm: r.times_delaunay for r in at_largest
-                                      if r.times_delaunay is not None}, False, "{:.2f}x"))
-            lines.append(SummaryLine(f"Memory, {input_name} curve, n = {largest:,}", "peak MiB of the reconstruction",
-                                     {r.algorithm: r.reconstruction_mib for r in at_largest
-                                      if r.reconstruction_mib is not None}, False, "{:.1f}"))
-    return [line for line in lines if line.values]
+            medians = {a: float(np.median(v)) for a, v in by_algorithm.items()}
+            ranking = sorted(medians, key=lambda a: (medians[a], a))
+            best = ranking[0]
+            runner_up = ranking[1] if len(ranking) > 1 else None
+            repetitions = max(len(v) for v in by_algorithm.values())
+            figure = "scaling_runtime" if unit == "x" else "scaling_memory"
+            separated = runner_up is not None and medians[runner_up] > medians[best]
+            why = (f"{best} {fmt.format(medians[best])} against {runner_up} {fmt.format(medians[runner_up])}"
+                   if runner_up else "only one algorithm was timed")
+            lines.append(SummaryLine(condition, measure, False,
+                                     f"{len(medians)} algorithms, median of {repetitions} repetition(s) each", best,
+                                     runner_up, separated, why, {a: fmt.format(v) for a, v in medians.items()},
+                                     figures=(figure,),
+                                     rule=f"the scaling benchmark's {input_name} input at its largest n"))
+    return lines
 
 
-def summary_table_html(lines: list[SummaryLine]) -> str:
-    algorithms = sorted_algorithms({a for line in lines for a in line.values})
-    head = "".join(f"<th>{html.escape(a)}</th>" for a in algorithms)
+def summary_html(summaries: list[ConditionSummary], other_lines: list[SummaryLine]) -> str:
+    """The summary table, then per condition every method's statistics (in a details element)."""
+    head = ("<thead><tr><th>condition</th><th>measure</th><th>runs</th><th>best</th><th>runner-up</th>"
+            "<th>verdict</th></tr></thead>")
     body = []
-    for line in lines:
-        ranking = line.ranking()
-        best = ranking[0]
+    for summary in summaries:
+        span = len(summary.lines) + 1
+        links = ", ".join(f'<a href="#{stem}">{stem}</a>' for stem in summary.figures)
+        body.append(f'<tr class="condition-start"><th scope="row" rowspan="{span}">{html.escape(summary.name)}'
+                    f'<div class="rule">{html.escape(summary.rule)}; {summary.runs} runs on {summary.inputs} inputs; '
+                    f'figures: {links}; <a href="#details-{_anchor(summary.name)}">every method</a></div></th>'
+                    + _line_cells(summary.lines[0]) + "</tr>")
+        for line in summary.lines[1:]:
+            body.append("<tr>" + _line_cells(line) + "</tr>")
+        body.append(f'<tr class="agreement"><td colspan="5">{html.escape(summary.agreement)}</td></tr>')
+    for line in other_lines:
+        links = ", ".join(f'<a href="#{stem}">{stem}</a>' for stem in line.figures)
+        figure_text = f"; figure: {links}" if links else ""
+        body.append(f'<tr class="condition-start"><th scope="row">{html.escape(line.condition)}<div class="rule">'
+                    f'{html.escape(line.rule)}{figure_text}</div></th>' + _line_cells(line) + "</tr>")
+    table = f'<table class="summary">{head}<tbody>{"".join(body)}</tbody></table>'
+    return table + "".join(_details_html(summary) for summary in summaries) + \
+        "".join(_line_details_html(line) for line in other_lines if line.comparison is not None)
+
+
+def _anchor(name: str) -> str:
+    return "".join(c if c.isalnum() else "-" for c in name.lower())
+
+
+def _line_cells(line: SummaryLine) -> str:
+    direction = "higher is better" if line.higher_is_better else "lower is better"
+    tolerance = (f", tie within {line.comparison.metric.tolerance_text()}" if line.comparison is not None else "")
+
+    def method_cell(label: str | None) -> str:
+        if label is None:
+            return '<td class="missing">-</td>'
+        return (f'<td><span class="method">{html.escape(label)}</span><div class="value">'
+                f'{html.escape(line.cells[label])}</div></td>')
+
+    verdict_class = "separated" if line.separated else "unseparated"
+    return (f'<td>{html.escape(line.measure)} <span class="direction">({direction}{tolerance})</span></td>'
+            f'<td>{html.escape(line.runs_text)}</td>{method_cell(line.best)}{method_cell(line.runner_up)}'
+            f'<td class="{verdict_class}">{html.escape(line.verdict)}</td>')
+
+
+def _majority_wins(comparison: Comparison, label: str) -> tuple[int, int]:
+    """How many other methods this one beats, and loses to, on most of their shared inputs."""
+    beats = loses = 0
+    for (a, _), h in comparison.pairs.items():
+        if a == label:
+            beats += h.wins > h.losses
+            loses += h.losses > h.wins
+    return beats, loses
+
+
+def _details_html(summary: ConditionSummary) -> str:
+    labels = [v.label for v in summary.variants]
+    head = "".join(f"<th>{html.escape(line.measure)}</th>" for line in summary.lines)
+    body = []
+    for label in labels:
         cells = []
-        for algorithm in algorithms:
-            if algorithm not in line.values:
-                cells.append('<td class="missing">-</td>')
-            elif line.values[algorithm] == line.values[best]:
-                cells.append(f'<td class="best">{line.formatted(algorithm)}</td>')
-            else:
-                cells.append(f"<td>{line.formatted(algorithm)}</td>")
-        winners = [a for a in ranking if line.values[a] == line.values[best]]
-        runner_up = next((a for a in ranking if line.values[a] != line.values[best]), "-")
-        direction = "higher is better" if line.higher_is_better else "lower is better"
-        body.append(f"<tr><th scope=\"row\">{html.escape(line.condition)}</th><td>{html.escape(line.measure)} "
-                    f"<span class=\"direction\">({direction})</span></td><td class=\"winner\">"
-                    f"{html.escape(', '.join(winners))}</td><td>{html.escape(runner_up)}</td>{''.join(cells)}</tr>")
-    return (f"<table class=\"summary\"><thead><tr><th>condition</th><th>measure</th><th>best</th>"
-            f"<th>runner-up</th>{head}</tr></thead><tbody>{''.join(body)}</tbody></table>")
+        for line in summary.lines:
+            if line.comparison is None or label not in line.comparison.statistics:
+                cells.append('<td class="missing">undefined</td>')
+                continue
+            beats, loses = _majority_wins(line.comparison, label)
+            best_class = ' class="best"' if label == line.best else ""
+            cells.append(f"<td{best_class}>{html.escape(line.cells[label])}; head to head beats {beats}, "
+                         f"loses to {loses}</td>")
+        body.append(f"<tr><th scope=\"row\">{html.escape(label)}</th>{''.join(cells)}</tr>")
+    return (f'<details id="details-{_anchor(summary.name)}"><summary>{html.escape(summary.name)}: every method '
+            f"({summary.runs} runs on {summary.inputs} inputs)</summary><table class=\"details\"><thead><tr>"
+            f"<th>method</th>{head}</tr></thead><tbody>{''.join(body)}</tbody></table></details>")
+
+
+def _line_details_html(line: SummaryLine) -> str:
+    body = "".join(f"<tr><th scope=\"row\">{html.escape(label)}</th><td>{html.escape(line.cells[label])}</td></tr>"
+                   for label in line.comparison.ranking if label in line.cells)
+    return (f'<details id="details-{_anchor(line.condition)}"><summary>{html.escape(line.condition)}: every method'
+            f"</summary><table class=\"details\"><thead><tr><th>method</th><th>{html.escape(line.measure)}</th></tr>"
+            f"</thead><tbody>{body}</tbody></table></details>")

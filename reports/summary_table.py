@@ -163,8 +163,9 @@ def _statistics_cell(comparison: Comparison, label: str) -> str:
 
 def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str | None, str | None, bool, str]:
     """(best, runner-up, separated, why): the best by median (then by share near the best), the
-    runner-up the next method of another algorithm, separated when the best is better than the
-    runner-up on more of their shared inputs than it is worse."""
+    runner-up the next method of another algorithm. The best is separated when it is better than
+    every method of another algorithm on more of their shared inputs than it is worse; otherwise
+    the methods it does not beat tie with it, and the first method outside that group is named."""
     ranking = comparison.ranking
     if not ranking:
         return None, None, False, "no method reports it here"
@@ -173,24 +174,30 @@ def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str |
     if not others:
         return best, None, False, f"not separated: only {algorithm_of[best]} reports it here"
     runner_up = others[0]
-    h: HeadToHead = comparison.pairs[(best, runner_up)]
     tolerance = comparison.metric.tolerance_text()
-    if h.shared == 0:
-        return best, runner_up, False, f"not separated: {best} and {runner_up} ran no input in common"
-    if h.wins > h.losses:
-        return best, runner_up, True, (f"{best} is better than {runner_up} by more than {tolerance} on {h.wins} of "
-                                       f"{h.shared} shared inputs, worse on {h.losses}")
-    if h.wins == h.losses == 0:
-        return best, runner_up, False, (f"not separated: {best} and {runner_up} are within {tolerance} of each "
-                                        f"other on all {h.shared} shared inputs")
-    return best, runner_up, False, (f"not separated: {best} has the better median, but is better than {runner_up} "
-                                    f"on {h.wins} of {h.shared} shared inputs and worse on {h.losses}")
+
+    def record(other: str) -> str:
+        h: HeadToHead = comparison.pairs[(best, other)]
+        return f"better on {h.wins}, worse on {h.losses} of {h.shared} shared inputs"
+
+    tied = [label for label in others if comparison.pairs[(best, label)].wins <= comparison.pairs[(best, label)].losses]
+    if not tied:
+        return best, runner_up, True, (f"{best} is better by more than {tolerance} than each other method on more "
+                                       f"shared inputs than it is worse; against {runner_up}: {record(runner_up)}")
+    beaten = [label for label in others if label not in tied]
+    listed = ", ".join(tied[:4]) + (f" and {len(tied) - 4} more" if len(tied) > 4 else "")
+    why = f"not separated: {best} is not better than {listed} on most shared inputs (against {tied[0]}: " \
+          f"{record(tied[0])})"
+    if beaten:
+        why += f"; this group is ahead of {beaten[0]} ({best} {record(beaten[0])})"
+    return best, runner_up, False, why
 
 
-def _runs_text(rows: list[SweepRow]) -> str:
-    failed = sum(1 for r in rows if not r.ok)
-    inputs = len({input_key(r) for r in rows})
-    return f"{len(rows)} runs on {inputs} inputs" + (f" ({failed} failed)" if failed else "")
+def _runs_text(comparison: Comparison) -> str:
+    runs = sum(s.runs for s in comparison.statistics.values())
+    failed = sum(s.failed for s in comparison.statistics.values())
+    return (f"{runs} runs of {len(comparison.statistics)} methods on {comparison.inputs} inputs"
+            + (f" ({failed} failed)" if failed else ""))
 
 
 def _accuracy_line(condition: str, metric: Metric, variants: list[Variant], defined_anywhere) -> SummaryLine | None:
@@ -201,8 +208,8 @@ def _accuracy_line(condition: str, metric: Metric, variants: list[Variant], defi
     comparison = compare(values, metric)
     algorithm_of = {v.label: v.algorithm for v in variants}
     best, runner_up, separated, why = verdict(comparison, algorithm_of)
-    scored = [r for v in variants if v.label in values for r in v.rows]
-    return SummaryLine(condition, metric.name, metric.higher_is_better, _runs_text(scored), best, runner_up, separated,
+    return SummaryLine(condition, metric.name, metric.higher_is_better, _runs_text(comparison), best, runner_up,
+                       separated,
                        why, {label: _statistics_cell(comparison, label) for label in values}, comparison)
 
 
@@ -230,8 +237,9 @@ def condition_summaries(rows: list[SweepRow]) -> list[ConditionSummary]:
     all_settings = settings_by_algorithm(rows)
     defined_anywhere = defined_metrics(rows, ACCURACY_METRICS)
     summaries = []
+    by_condition = condition_rows(rows)
     for condition in CONDITIONS:
-        chosen = condition_rows(rows).get(condition.name)
+        chosen = by_condition.get(condition.name)
         if not chosen:
             continue
         choice = setting_choice_metric(chosen)
@@ -309,11 +317,12 @@ def dominant_points_line(rows: list[SweepRow]) -> SummaryLine | None:
     cells = {}
     for algorithm, s in statistics.items():
         cr, ise = s.compression_ratio, s.integral_square_error
+        of_algorithm = sum(1 for r in rows if r.algorithm == algorithm)
         cells[algorithm] = (f"FOM {s.figure_of_merit:.3g} = CR {cr[0]:.3g} [{cr[1]:.3g}, {cr[2]:.3g}] / "
-                            f"ISE {ise[0]:.3g} [{ise[1]:.3g}, {ise[2]:.3g}] over {s.runs} runs")
-    chosen = [r for r in rows if r.algorithm in statistics]
+                            f"ISE {ise[0]:.3g} [{ise[1]:.3g}, {ise[2]:.3g}], medians [IQR] over the {s.runs} of "
+                            f"its {of_algorithm} runs that define both")
     line = SummaryLine("Dominant points (every run of a method that finds them)",
-                       "FOM from the medians: median CR / median ISE", True, _runs_text(chosen), best, runner_up,
+                       "FOM from the medians: median CR / median ISE", True, _runs_text(comparison), best, runner_up,
                        separated, why + " (head to head on each run's FOM)", cells, comparison)
     line.rule = ("every run of the methods that produce dominant points; FOM is taken from the medians of CR and ISE "
                  "because ISE is near 0 on some runs, where one run's CR / ISE would decide a mean of ratios")

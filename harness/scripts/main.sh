@@ -73,10 +73,13 @@ done
 "$curvebench" list --json > "$out/catalogue.json"
 algorithms=$("$curvebench" list | grep -v '^ ')
 for points in "$out"/gallery/*; do
+  case "$points" in *.json | *.svg) continue ;; esac
   for algorithm in $algorithms; do
-    # A failed reconstruction still writes its error record, which the gallery shows.
-    "$curvebench" reconstruct --algorithm "$algorithm" --input "$points" \
-      --output "$out/gallery/$(basename "${points%.*}").$algorithm.json" 2>/dev/null || true
+    # A failed reconstruction still writes its error record, which the gallery shows; the SVG
+    # beside the JSON is the full-size picture the report links.
+    name="$out/gallery/$(basename "${points%.*}").$algorithm"
+    "$curvebench" reconstruct --algorithm "$algorithm" --input "$points" --output "$name.json" --svg "$name.svg" \
+      2>/dev/null || true
   done
 done
 

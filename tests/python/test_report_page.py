@@ -16,7 +16,8 @@ from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-FIGURES = ["success_vs_epsilon", "l2_vs_density", "robustness", "scaling_runtime", "scaling_memory", "gallery"]
+FIGURES = ["metrics_by_condition", "error_vs_runtime", "success_vs_epsilon", "l2_vs_density", "robustness",
+           "scaling_runtime", "scaling_memory", "gallery"]
 ALGORITHMS = ["labeling", "crust", "nn-crust", "optimal-transport"]
 # How much worse than the labeling each algorithm is in the fixture (L2 error multiplier).
 ERROR_FACTOR = {"labeling": 1.0, "crust": 1.5, "nn-crust": 1.2, "optimal-transport": 3.0}
@@ -117,6 +118,10 @@ def write_reconstructions(directory: pathlib.Path):
         }
         for algorithm, record in records.items():
             (directory / f"{shape}.{algorithm}.json").write_text(json.dumps({"algorithm": algorithm, **common, **record}))
+            if algorithm != "crust":  # as `curvebench reconstruct --svg` writes it; crust's is missing
+                (directory / f"{shape}.{algorithm}.svg").write_text(
+                    f'<svg xmlns="http://www.w3.org/2000/svg" width="400" height="400"><title>{algorithm}: {shape}</title>'
+                    '<circle cx="200" cy="200" r="150" fill="none" stroke="black"/></svg>')
         error = {"algorithm": "nn-crust", "input": {"path": f"{shape}.xy"}, "status": "error",
                  "message": f"{shape}.xy: a made-up failure for the gallery"}
         (directory / f"{shape}.nn-crust.json").write_text(json.dumps(error))
@@ -185,12 +190,25 @@ def test_page_references_only_files_that_exist_and_every_figure(report):
         assert f"{stem}.png" in references and f"{stem}.svg" in references
 
 
+def test_gallery_links_every_reconstruction_to_its_full_size_svg(report, report_inputs):
+    references = page_references(report)
+    for shape in ("circle", "rose"):
+        for algorithm in ("labeling", "optimal-transport"):
+            link = f"gallery/{shape}.{algorithm}.svg"
+            assert link in references
+            assert (report.parent / link).read_bytes() == \
+                (report_inputs / "reconstructions" / f"{shape}.{algorithm}.svg").read_bytes()
+    assert not any(reference.endswith((".crust.svg", ".nn-crust.svg")) for reference in references)
+    text = report.read_text()
+    assert '<td class="missing">no SVG</td>' in text and '<td class="missing">error</td>' in text
+
+
 def test_page_has_a_caption_for_every_figure_and_the_summary(report):
     text = report.read_text()
     assert text.count("<figcaption>") == len(FIGURES)
     assert "Which method is best under which condition" in text
-    for condition in ["Clean smooth curves", "Several curves", "Sparse sampling", "Noise", "Outliers", "Medial axis",
-                      "Dominant points", "Speed, smooth curve", "Memory, noisy curve"]:
+    for condition in ["Several curves", "Sparse sampling", "Dense sampling", "Noise", "Outliers", "Sharp corners",
+                      "Medial axis", "Dominant points", "Speed, smooth curve", "Memory, noisy curve"]:
         assert condition in text, condition
     assert "Not drawn" not in text
     assert "1 timeout" in text and "1 crash" in text  # failed runs are reported, not hidden

@@ -67,8 +67,9 @@ reports/README.md, and each row links to the figures it summarises. Per measure:
 median over its runs with the interquartile range [25%, 75%], and the share of its runs within
 the stated tolerance of the best method on the same input; the best method has the best median
 (then the larger share), the runner-up is the next method of another algorithm. Best and
-runner-up are <em>separated</em> (green) when, on the inputs both ran, the best is better by more
-than the tolerance on more inputs than it is worse; otherwise (amber) the row says why not.
+runner-up are <em>separated</em> (green) when, against every other method, the best is better by
+more than the tolerance on at least 3 more of the inputs both ran than it is worse, so that no
+single run can reverse the verdict; otherwise (amber) the row says why not.
 A failed run (error, timeout, crash) counts as the worst value; a metric a method does not
 define (edge F1 with vertices of its own, L2 on open curves) leaves it out of that measure. No
 mean is used: one run cannot move a median or more than one head-to-head count. A method run

@@ -49,9 +49,9 @@ def metrics_by_condition_figure(summaries: list[ConditionSummary], out_dir: path
     conditions = [s.name for s in summaries]
     columns = min(2, len(metrics))
     grid_rows = math.ceil(len(metrics) / columns)
-    width = 1.2 * len(conditions) + 3.2
+    width = 0.8 * len(conditions) + 2.8
     fig, axes = plt.subplots(grid_rows, columns, squeeze=False,
-                             figsize=(width * columns, 0.34 * len(methods) * grid_rows + 1.6 * grid_rows))
+                             figsize=(width * columns, (0.3 * len(methods) + 1.5) * grid_rows))
     for ax, metric in zip(axes.flat, metrics):
         medians = np.full((len(methods), len(conditions)), np.nan)
         for column, summary in enumerate(summaries):
@@ -113,7 +113,7 @@ def error_runtime_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFi
         metric = setting_choice_metric(chosen)
         if metric is None:
             continue
-        points = collections.defaultdict(list)  # algorithm -> (seconds, median, default)
+        points = collections.defaultdict(list)  # algorithm -> (milliseconds, median, default of a grid)
         groups = collections.defaultdict(list)
         for r in chosen:
             groups[(r.algorithm, setting_key(r.parameters))].append(r)
@@ -124,7 +124,8 @@ def error_runtime_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFi
                 continue
             median = quartiles(values)[0]
             if math.isfinite(median):
-                default = setting_key(default_setting(algorithm, all_settings[algorithm])) == key
+                default = (len(all_settings[algorithm]) > 1
+                           and setting_key(default_setting(algorithm, all_settings[algorithm])) == key)
                 points[algorithm].append((float(np.median(seconds)) * 1000, median, default))
         if points:
             panels.append((name, metric, points))
@@ -164,7 +165,7 @@ def error_runtime_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFi
     caption = ("What each parameter setting costs: one point per algorithm and setting under each condition, at the "
                "median of its runs' reconstruction time (the algorithm's own timing_ms total, without evaluation) "
                "and the median of the condition's first defined metric (L2 error, else curve recall, else Hausdorff; "
-               "a failed run counts as the worst value). Ringed: the algorithm's default setting. A line joins the "
+               "a failed run counts as the worst value). Ringed: the default setting of a method run with a grid. A line joins the "
                "settings of one algorithm's grid that no other of its settings beats on both time and error; the "
                "grey dashed steps are the front over all methods. The times are taken inside each sweep run on a "
                "shared machine and are indicative only: speed is measured by the benchmark (runtime against n).")

@@ -43,6 +43,10 @@ FIGURE_OF_MERIT = Metric("figure_of_merit", "FOM = CR / ISE", higher_is_better=T
 COMPRESSION_RATIO = Metric("compression_ratio", "CR", higher_is_better=True, tolerance=0.05, relative=True)
 INTEGRAL_SQUARE_ERROR = Metric("integral_square_error", "ISE", higher_is_better=False, tolerance=0.05, relative=True)
 HEATMAP_FIGURE = "metrics_by_condition"
+# The best is separated from a method when it is better on at least this many more shared inputs
+# than it is worse: one run turned from a win into a loss moves the difference by 2, so no single
+# run can reverse a verdict.
+SEPARATING_MARGIN = 3
 
 
 def input_key(r: SweepRow) -> str:
@@ -163,9 +167,10 @@ def _statistics_cell(comparison: Comparison, label: str) -> str:
 
 def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str | None, str | None, bool, str]:
     """(best, runner-up, separated, why): the best by median (then by share near the best), the
-    runner-up the next method of another algorithm. The best is separated when it is better than
-    every method of another algorithm on more of their shared inputs than it is worse; otherwise
-    the methods it does not beat tie with it, and the first method outside that group is named."""
+    runner-up the next method of another algorithm. The best is separated when, against every
+    method of another algorithm, it is better on SEPARATING_MARGIN or more shared inputs than it is
+    worse; otherwise the methods it does not beat so tie with it, and the first method outside
+    that group is named."""
     ranking = comparison.ranking
     if not ranking:
         return None, None, False, "no method reports it here"
@@ -180,13 +185,16 @@ def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str |
         h: HeadToHead = comparison.pairs[(best, other)]
         return f"better on {h.wins}, worse on {h.losses} of {h.shared} shared inputs"
 
-    tied = [label for label in others if comparison.pairs[(best, label)].wins <= comparison.pairs[(best, label)].losses]
+    tied = [label for label in others
+            if comparison.pairs[(best, label)].wins - comparison.pairs[(best, label)].losses < SEPARATING_MARGIN]
     if not tied:
-        return best, runner_up, True, (f"{best} is better by more than {tolerance} than each other method on more "
-                                       f"shared inputs than it is worse; against {runner_up}: {record(runner_up)}")
+        return best, runner_up, True, (f"{best} is better by more than {tolerance} than each other method on at least "
+                                       f"{SEPARATING_MARGIN} more shared inputs than it is worse; against {runner_up}: "
+                                       f"{record(runner_up)}")
     beaten = [label for label in others if label not in tied]
     listed = ", ".join(tied[:4]) + (f" and {len(tied) - 4} more" if len(tied) > 4 else "")
-    why = f"not separated: {best} is not better than {listed} on most shared inputs (against {tied[0]}: " \
+    why = f"not separated: {best} is not better than {listed} on {SEPARATING_MARGIN} more shared inputs than " \
+          f"worse (against {tied[0]}: " \
           f"{record(tied[0])})"
     if beaten:
         why += f"; this group is ahead of {beaten[0]} ({best} {record(beaten[0])})"

@@ -73,7 +73,6 @@ done
 "$curvebench" list --json > "$out/catalogue.json"
 algorithms=$("$curvebench" list | grep -v '^ ')
 for points in "$out"/gallery/*; do
-  case "$points" in *.json | *.svg) continue ;; esac
   for algorithm in $algorithms; do
     # A failed reconstruction still writes its error record, which the gallery shows; the SVG
     # beside the JSON is the full-size picture the report links.

@@ -106,7 +106,7 @@ def test_methods_within_tolerance_everywhere_are_not_separated_and_the_row_says_
     rows = noisy_rows({"labeling": lambda i: 0.010, "labeling-holes": lambda i: 0.011, "crust": lambda i: 0.5})
     l2 = line_of(summary_of(rows, "Noise"), "L2 error")
     assert not l2.separated
-    assert "not separated: labeling is not better than labeling-holes" in l2.verdict
+    assert "not separated: labeling is not better than labeling-holes on 3 more" in l2.verdict
     assert "ahead of crust" in l2.verdict
 
 
@@ -216,3 +216,12 @@ def test_fom_comes_from_the_medians_of_cr_and_ise_not_from_a_mean_of_ratios():
     assert line.cells["labeling-holes"].startswith("FOM 20 = CR 10 [10, 10] / ISE 0.5 [0.5, 0.5]")
     head_to_head = line.comparison.pairs[("labeling-holes", "labeling")]
     assert (head_to_head.wins, head_to_head.losses) == (4, 1)
+
+
+def test_a_lead_one_run_could_reverse_does_not_separate():
+    # labeling is better on two inputs and ties on the rest: turning one of them into a loss
+    # would leave 1 to 1, so the lead of 2 does not separate.
+    rows = noisy_rows({"labeling": lambda i: 0.01, "crust": lambda i: 0.05 if i < 2 else 0.01})
+    l2 = line_of(summary_of(rows, "Noise"), "L2 error")
+    assert l2.best == "labeling" and not l2.separated
+    assert "better on 2, worse on 0 of 10 shared inputs" in l2.verdict

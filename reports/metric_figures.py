@@ -75,7 +75,11 @@ def metrics_by_condition_figure(summaries: list[ConditionSummary], out_dir: path
                     text = "failed"
                 else:
                     text = f"{value:.2g}"
-                ax.text(column, row, text, ha="center", va="center", fontsize=6.5, color="#111111")
+                # Both ends of the colour map are dark: light text there.
+                share = shown[row, column] / top if np.isfinite(shown[row, column]) else 0.5
+                dark = share < 0.2 or share > 0.8
+                ax.text(column, row, text, ha="center", va="center", fontsize=6.5,
+                        color="white" if dark else "#111111")
         ax.set_xticks(range(len(conditions)), [c.replace(" ", "\n") for c in conditions], fontsize=7.5)
         ax.set_yticks(range(len(methods)), [f"{a} ({BEST_OF_GRID})" if best else a for a, best in methods],
                       fontsize=7.5)

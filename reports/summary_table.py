@@ -112,9 +112,11 @@ def condition_variants(rows: list[SweepRow], all_settings: dict[str, list[dict]]
             candidate = Variant("", algorithm, by_setting[key], False).values(choice, defined_anywhere)
             return sign * quartiles(list(candidate.values()))[0] if candidate else math.inf
 
-        order = [setting_key(s) for s in settings if setting_key(s) in by_setting]
-        best = min(order, key=median_of)  # ties keep the setting written first
         default_key = setting_key(default)
+        # A tie keeps the default, then the setting written first.
+        order = sorted((setting_key(s) for s in settings if setting_key(s) in by_setting),
+                       key=lambda key: key != default_key)
+        best = min(order, key=median_of)
         count = len(order)
         if best == default_key:
             variants.append(Variant(f"{algorithm} (default, best of {count} settings)", algorithm,

@@ -225,3 +225,9 @@ def test_a_lead_one_run_could_reverse_does_not_separate():
     l2 = line_of(summary_of(rows, "Noise"), "L2 error")
     assert l2.best == "labeling" and not l2.separated
     assert "better on 2, worse on 0 of 10 shared inputs" in l2.verdict
+
+
+def test_a_grid_whose_settings_tie_is_shown_at_its_default(alpha_catalogue):
+    rows = [row("alpha-shape", {"family": "rose", "outliers": 0.1, "seed": seed}, {"l2_error": 0.1},
+                parameters={"alpha": alpha, "components": 1}) for seed in (1, 2) for alpha in (0.5, 0.0)]
+    assert [v.label for v in summary_of(rows, "Outliers").variants] == ["alpha-shape (default, best of 2 settings)"]

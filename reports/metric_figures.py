@@ -13,7 +13,7 @@ import pathlib
 import numpy as np
 
 from reports.conditions import condition_rows
-from reports.parameter_settings import default_setting, setting_key, settings_by_algorithm
+from reports.parameter_settings import default_setting, setting_key, settings_by_algorithm, shared_inputs
 from reports.robust_statistics import quartiles
 from reports.style import SavedFigure, algorithm_color, algorithm_marker, plt, save_figure, sorted_algorithms
 from reports.summary_table import ACCURACY_METRICS, HEATMAP_FIGURE, ConditionSummary, run_value, \
@@ -95,8 +95,9 @@ def metrics_by_condition_figure(summaries: list[ConditionSummary], out_dir: path
                "is undefined for the method, such as edge F1 for a method with vertices of its own or L2 on open "
                f"curves). Runs per condition (all methods): {runs}. A method with a parameter grid has a second "
                f"row, '{BEST_OF_GRID}', at the setting with the best median of the condition's first defined metric "
-               "(L2, else curve recall, else Hausdorff); the summary table names the setting. Chosen on the same "
-               "runs it is scored on, that row is an optimistic bound. Metrics are defined in reports/README.md.")
+               "(L2, else curve recall, else Hausdorff) over the inputs all its settings ran; the summary table names "
+               "the setting and on how many inputs it ran (a grid may cover only some of the inputs its default "
+               "runs on). Chosen on the same runs it is scored on, that row is an optimistic bound. Metrics are defined in reports/README.md.")
     return save_figure(fig, out_dir, HEATMAP_FIGURE, "Accuracy metrics by condition", caption)
 
 
@@ -121,7 +122,11 @@ def error_runtime_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFi
         groups = collections.defaultdict(list)
         for r in chosen:
             groups[(r.algorithm, setting_key(r.parameters))].append(r)
+        # A grid's settings are placed by the inputs they all ran (the default may run on more).
+        shared = {algorithm: shared_inputs([g for (a, _), g in groups.items() if a == algorithm])
+                  for algorithm in {a for a, _ in groups}}
         for (algorithm, key), group in groups.items():
+            group = [r for r in group if r.input_key in shared[algorithm]]
             values = [v for v in (run_value(r, metric) for r in group) if v is not None]
             seconds = [r.seconds for r in group if r.ok and r.seconds is not None]
             if not values or not seconds:
@@ -169,7 +174,7 @@ def error_runtime_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFi
     caption = ("What each parameter setting costs: one point per algorithm and setting under each condition, at the "
                "median of its runs' reconstruction time (the algorithm's own timing_ms total, without evaluation) "
                "and the median of the condition's first defined metric (L2 error, else curve recall, else Hausdorff; "
-               "a failed run counts as the worst value). Ringed: the default setting of a method run with a grid. A line joins the "
+               "a failed run counts as the worst value); the settings of one grid over the inputs they all ran. Ringed: the default setting of a method run with a grid. A line joins the "
                "settings of one algorithm's grid that no other of its settings beats on both time and error; the "
                "grey dashed steps are the front over all methods. The times are taken inside each sweep run on a "
                "shared machine and are indicative only: speed is measured by the benchmark (runtime against n).")

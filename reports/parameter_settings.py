@@ -58,6 +58,12 @@ def default_rows(rows: list[SweepRow]) -> list[SweepRow]:
     return [r for r in rows if setting_key(r.parameters) == defaults[r.algorithm]]
 
 
+def shared_inputs(groups) -> set[str]:
+    """The inputs every group of rows (one per setting of an algorithm) ran."""
+    keys = [{r.input_key for r in group} for group in groups]
+    return set.intersection(*keys) if keys else set()
+
+
 def changed_values_text(setting: dict, default: dict) -> str:
     """"alpha=0.02": the values in which a setting differs from the default."""
     return ", ".join(f"{name}={_value_text(value)}" for name, value in setting.items() if default.get(name) != value)

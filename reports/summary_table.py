@@ -21,7 +21,8 @@ import math
 import numpy as np
 
 from reports.conditions import CONDITIONS, condition_rows
-from reports.parameter_settings import changed_values_text, default_setting, setting_key, settings_by_algorithm
+from reports.parameter_settings import changed_values_text, default_setting, setting_key, settings_by_algorithm, \
+    shared_inputs
 from reports.robust_statistics import Comparison, HeadToHead, Metric, compare, quartiles
 from reports.scaling_results import DELAUNAY, ScalingSuite
 from reports.style import sorted_algorithms
@@ -47,10 +48,6 @@ HEATMAP_FIGURE = "metrics_by_condition"
 # than it is worse: one run turned from a win into a loss moves the difference by 2, so no single
 # run can reverse a verdict.
 SEPARATING_MARGIN = 3
-
-
-def input_key(r: SweepRow) -> str:
-    return json.dumps(r.settings, sort_keys=True)
 
 
 def run_value(r: SweepRow, metric: Metric) -> float | None:
@@ -80,7 +77,7 @@ class Variant:
         for r in self.rows:
             v = run_value(r, metric)
             if v is not None:
-                values[input_key(r)] = v
+                values[r.input_key] = v
         return values
 
 
@@ -108,8 +105,13 @@ def condition_variants(rows: list[SweepRow], all_settings: dict[str, list[dict]]
             by_setting[setting_key(r.parameters)].append(r)
         sign = -1 if choice.higher_is_better else 1
 
+        # Settings are compared on the inputs they all ran: a grid may run on a subset of the
+        # inputs its default runs on, and an easier subset would flatter it.
+        shared = shared_inputs(by_setting.values())
+
         def median_of(key: str) -> float:
-            candidate = Variant("", algorithm, by_setting[key], False).values(choice, defined_anywhere)
+            on_shared = [r for r in by_setting[key] if r.input_key in shared]
+            candidate = Variant("", algorithm, on_shared, False).values(choice, defined_anywhere)
             return sign * quartiles(list(candidate.values()))[0] if candidate else math.inf
 
         default_key = setting_key(default)
@@ -163,8 +165,9 @@ def _statistics_cell(comparison: Comparison, label: str) -> str:
     s = comparison.statistics[label]
     m = comparison.metric
     failed = f", {s.failed} failed" if s.failed else ""
+    subset = f" (on {s.runs} of the {comparison.inputs} inputs)" if s.runs < comparison.inputs else ""
     return (f"{m.format(s.median)} [{m.format(s.lower_quartile)}, {m.format(s.upper_quartile)}]; "
-            f"{100 * s.within_tolerance:.0f}% of {s.runs} runs{failed} within {m.tolerance_text()} of the best")
+            f"{100 * s.within_tolerance:.0f}% of {s.runs} runs{failed} within {m.tolerance_text()} of the best{subset}")
 
 
 def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str | None, str | None, bool, str]:
@@ -265,7 +268,7 @@ def condition_summaries(rows: list[SweepRow]) -> list[ConditionSummary]:
                 lines.append(line)
         algorithm_of = {v.label: v.algorithm for v in variants}
         summaries.append(ConditionSummary(condition.name, condition.rule, (HEATMAP_FIGURE,) + condition.figures,
-                                          len(chosen), len({input_key(r) for r in chosen}), lines,
+                                          len(chosen), len({r.input_key for r in chosen}), lines,
                                           agreement_text(lines, algorithm_of), variants))
     return summaries
 
@@ -320,7 +323,7 @@ def dominant_points_line(rows: list[SweepRow]) -> SummaryLine | None:
         if r.algorithm in statistics:
             v = run_value(r, FIGURE_OF_MERIT)
             if v is not None:
-                by_algorithm[r.algorithm][input_key(r)] = v
+                by_algorithm[r.algorithm][r.input_key] = v
     comparison = compare(dict(by_algorithm), FIGURE_OF_MERIT)
     comparison.ranking = ranking
     best, runner_up, separated, why = verdict(comparison, {a: a for a in ranking})

@@ -367,13 +367,23 @@ def speed_lines(suite: ScalingSuite) -> list[SummaryLine]:
             runner_up = ranking[1] if len(ranking) > 1 else None
             repetitions = max(len(v) for v in by_algorithm.values())
             figure = "scaling_runtime" if unit == "x" else "scaling_memory"
-            separated = runner_up is not None and medians[runner_up] > medians[best]
-            why = (f"{best} {fmt.format(medians[best])} against {runner_up} {fmt.format(medians[runner_up])}"
-                   if runner_up else "only one algorithm was timed")
-            lines.append(SummaryLine(condition, measure, False,
-                                     f"{len(medians)} algorithms, median of {repetitions} repetition(s) each", best,
-                                     runner_up, separated, why, {a: fmt.format(v) for a, v in medians.items()},
-                                     figures=(figure,),
+            # Separated when every repetition of the best is below every repetition of the runner-up.
+            if runner_up is None:
+                separated, why = False, "not separated: only one algorithm was timed"
+            elif repetitions < 2:
+                separated, why = False, (f"not separated: one measured run each ({best} {fmt.format(medians[best])}, "
+                                         f"{runner_up} {fmt.format(medians[runner_up])}); --benchmark_repetitions "
+                                         "gives a spread")
+            else:
+                separated = max(by_algorithm[best]) < min(by_algorithm[runner_up])
+                why = (f"{best} {fmt.format(medians[best])} against {runner_up} {fmt.format(medians[runner_up])}; "
+                       f"{'every' if separated else 'not every'} repetition of {best} below every one of "
+                       f"{runner_up}")
+                why = why if separated else "not separated: " + why
+            runs_text = f"{len(medians)} algorithms, " + (
+                f"median of {repetitions} repetitions each" if repetitions > 1 else "one measured run each")
+            lines.append(SummaryLine(condition, measure, False, runs_text, best, runner_up, separated, why,
+                                     {a: fmt.format(v) for a, v in medians.items()}, figures=(figure,),
                                      rule=f"the scaling benchmark's {input_name} input at its largest n"))
     return lines
 

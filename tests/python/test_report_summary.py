@@ -13,7 +13,8 @@ sys.path.insert(0, str(ROOT))  # the reports package lives at the repository roo
 
 from reports.conditions import condition_rows  # noqa: E402
 from reports.parameter_settings import default_rows, use_catalogue_defaults  # noqa: E402
-from reports.summary_table import condition_summaries, dominant_points_line  # noqa: E402
+from reports.scaling_results import ScalingRun, ScalingSuite  # noqa: E402
+from reports.summary_table import condition_summaries, dominant_points_line, speed_lines  # noqa: E402
 from reports.sweep_results import row_from_json  # noqa: E402
 
 
@@ -258,3 +259,19 @@ def test_a_best_setting_run_on_fewer_inputs_says_on_how_many(alpha_catalogue):
     l2 = line_of(summary_of(rows, "Noise"), "L2 error")
     assert l2.best == "alpha-shape (alpha=0.02; best of 2)"
     assert l2.cells[l2.best].endswith("(on 3 of the 6 inputs)")
+
+
+def suite_of(times_by_algorithm):
+    runs = [ScalingRun(algorithm, "smooth", 1000, seconds=0.01, times_delaunay=t, peak_mib=5.0, input_mib=4.0)
+            for algorithm, times in times_by_algorithm.items() for t in times]
+    return ScalingSuite(runs, {}, pathlib.Path("scaling.json"))
+
+
+def test_speed_is_separated_only_by_repetitions_that_do_not_overlap():
+    speed = speed_lines(suite_of({"labeling": [1.2], "crust": [1.5]}))[0]
+    assert (speed.best, speed.runner_up, speed.separated) == ("labeling", "crust", False)
+    assert "one measured run each" in speed.verdict
+    apart = speed_lines(suite_of({"labeling": [1.2, 1.25, 1.3], "crust": [1.5, 1.6, 1.4]}))[0]
+    assert apart.separated and apart.cells["labeling"] == "1.25x"
+    overlapping = speed_lines(suite_of({"labeling": [1.2, 1.25, 1.6], "crust": [1.5, 1.6, 1.4]}))[0]
+    assert overlapping.best == "labeling" and not overlapping.separated

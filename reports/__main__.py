@@ -16,7 +16,8 @@ import sys
 from reports.accuracy_figures import l2_density_figure, robustness_figure, success_epsilon_figure
 from reports.gallery_figure import gallery_figure
 from reports.html_page import write_page
-from reports.metric_figures import error_runtime_figure, metrics_by_condition_figure
+from reports.metric_figures import error_runtime_figure, medial_axis_and_dominant_points_figure, \
+    metrics_by_condition_figure
 from reports.parameter_settings import default_rows, use_catalogue_defaults
 from reports.reconstructions import read_reconstructions
 from reports.scaling_figures import memory_figure, runtime_figure
@@ -45,6 +46,8 @@ def build_report(out_dir: pathlib.Path, results: pathlib.Path | None, benchmark:
         for make, source, what in [
                 (metrics_by_condition_figure, summaries, "the metrics by condition: no run under a summary condition"),
                 (error_runtime_figure, rows, "error against runtime: no run under a summary condition"),
+                (medial_axis_and_dominant_points_figure, rows,
+                 "medial axis and dominant points: no run produced either"),
                 (success_epsilon_figure, at_default, "success rate against epsilon: no clean epsilon-sampled runs"),
                 (l2_density_figure, at_default, "L2 error against density: no clean runs with a fixed point count"),
                 (robustness_figure, at_default, "robustness: no runs with noise or outliers")]:
@@ -71,7 +74,8 @@ def build_report(out_dir: pathlib.Path, results: pathlib.Path | None, benchmark:
             missing.append(f"Not drawn: the gallery (no reconstruction JSON in {reconstructions}).")
     else:
         missing.append("Not drawn: the gallery (no reconstruction directory given).")
-    return write_page(out_dir, figures, summary_html(summaries, other_lines), sources, missing)
+    drawn = {figure.stem for figure in figures}
+    return write_page(out_dir, figures, summary_html(summaries, other_lines, drawn), sources, missing)
 
 
 def main(argv: list[str] | None = None) -> int:

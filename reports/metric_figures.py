@@ -2,8 +2,9 @@
   - metrics_by_condition: L2 error, edge F1, curve recall and Hausdorff side by side, the median
     of every method under every condition (a heat map per metric);
   - error_vs_runtime: per condition, each parameter setting's median error against its median
-    runtime, one point per setting, with each grid's front (as ann-benchmarks draws them).
-Both return None when there is nothing to draw."""
+    runtime, one point per setting, with each grid's front (as ann-benchmarks draws them);
+  - medial_axis_dominant_points: the distributions of medial-axis Hausdorff, CR and ISE.
+Each returns None when there is nothing to draw."""
 from __future__ import annotations
 
 import collections
@@ -16,8 +17,8 @@ from reports.conditions import condition_rows
 from reports.parameter_settings import default_setting, setting_key, settings_by_algorithm, shared_inputs
 from reports.robust_statistics import quartiles
 from reports.style import SavedFigure, algorithm_color, algorithm_marker, plt, save_figure, sorted_algorithms
-from reports.summary_table import ACCURACY_METRICS, HEATMAP_FIGURE, ConditionSummary, run_value, \
-    setting_choice_metric
+from reports.summary_table import ACCURACY_METRICS, DISTRIBUTIONS_FIGURE, HEATMAP_FIGURE, ConditionSummary, \
+    run_value, setting_choice_metric
 from reports.sweep_results import SweepRow
 
 # Colour scale of each metric: 0 to this value (L2 above 1 is a wrong region larger than the true one).
@@ -179,3 +180,39 @@ def error_runtime_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFi
                "grey dashed steps are the front over all methods. The times are taken inside each sweep run on a "
                "shared machine and are indicative only: speed is measured by the benchmark (runtime against n).")
     return save_figure(fig, out_dir, "error_vs_runtime", "Error against runtime, one point per setting", caption)
+
+
+def medial_axis_and_dominant_points_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFigure | None:
+    """Box plots over every finished run of the methods that produce them: medial-axis Hausdorff,
+    CR and ISE (log axes: one run far out shows as one far point, not as a moved average)."""
+    panels = [("medial_axis_hausdorff", "medial-axis Hausdorff / diagonal"),
+              ("compression_ratio", "CR = points / dominant points"), ("integral_square_error", "ISE (squared input units)")]
+    drawn = []
+    for key, label in panels:
+        by_algorithm = collections.defaultdict(list)
+        for r in rows:
+            value = r.metric(key) if r.ok else None
+            if value is not None and value > 0:
+                by_algorithm[r.algorithm].append(value)
+        if by_algorithm:
+            drawn.append((key, label, by_algorithm))
+    if not drawn:
+        return None
+    fig, axes = plt.subplots(1, len(drawn), figsize=(4.6 * len(drawn), 4.2), squeeze=False)
+    texts = []
+    for ax, (key, label, by_algorithm) in zip(axes[0], drawn):
+        algorithms = sorted_algorithms(by_algorithm)
+        boxes = ax.boxplot([by_algorithm[a] for a in algorithms], whis=(5, 95), patch_artist=True,
+                           flierprops={"markersize": 3, "alpha": 0.5})
+        for patch, algorithm in zip(boxes["boxes"], algorithms):
+            patch.set_facecolor(algorithm_color(algorithm))
+            patch.set_alpha(0.55)
+        ax.set_xticks(range(1, len(algorithms) + 1), algorithms, rotation=20, fontsize=8)
+        ax.set_yscale("log")
+        ax.set_title(label)
+        texts.append(f"{label}: " + ", ".join(f"{a} {len(by_algorithm[a])} runs" for a in algorithms))
+    fig.tight_layout()
+    caption = ("Distributions behind the summary's medial-axis and dominant-point lines, over every finished run "
+               "with a positive value (log axes leave out zeros: an ISE of 0 is a perfect fit): boxes are the "
+               "25-75% range with the median, whiskers 5-95%, dots the runs beyond. " + "; ".join(texts) + ".")
+    return save_figure(fig, out_dir, DISTRIBUTIONS_FIGURE, "Medial axis and dominant points", caption)

@@ -41,9 +41,8 @@ MEDIAL_AXIS_METRIC = Metric("medial_axis_hausdorff", "medial-axis Hausdorff / di
                             tolerance=0.005)
 # FOM spans orders of magnitude: two runs tie within 5% of the larger.
 FIGURE_OF_MERIT = Metric("figure_of_merit", "FOM = CR / ISE", higher_is_better=True, tolerance=0.05, relative=True)
-COMPRESSION_RATIO = Metric("compression_ratio", "CR", higher_is_better=True, tolerance=0.05, relative=True)
-INTEGRAL_SQUARE_ERROR = Metric("integral_square_error", "ISE", higher_is_better=False, tolerance=0.05, relative=True)
 HEATMAP_FIGURE = "metrics_by_condition"
+DISTRIBUTIONS_FIGURE = "medial_axis_dominant_points"
 # The best is separated from a method when it is better on at least this many more shared inputs
 # than it is worse: one run turned from a win into a loss moves the difference by 2, so no single
 # run can reverse a verdict.
@@ -67,7 +66,7 @@ class Variant:
     label: str
     algorithm: str
     rows: list[SweepRow]
-    default: bool  # the algorithm's default setting (also true for a method without parameters grid)
+    default: bool  # at the algorithm's default setting (so is a method run with one setting only)
 
     def values(self, metric: Metric, defined_anywhere: set[tuple[str, str]]) -> dict[str, float]:
         """input -> value; empty when the metric is undefined for this method."""
@@ -105,12 +104,12 @@ def condition_variants(rows: list[SweepRow], all_settings: dict[str, list[dict]]
             by_setting[setting_key(r.parameters)].append(r)
         sign = -1 if choice.higher_is_better else 1
 
-        # Settings are compared on the inputs they all ran: a grid may run on a subset of the
-        # inputs its default runs on, and an easier subset would flatter it.
+        # Settings are compared on the inputs they all ran (if any): a grid may run on a subset of
+        # the inputs its default runs on, and an easier subset would flatter it.
         shared = shared_inputs(by_setting.values())
 
         def median_of(key: str) -> float:
-            on_shared = [r for r in by_setting[key] if r.input_key in shared]
+            on_shared = [r for r in by_setting[key] if r.input_key in shared] if shared else by_setting[key]
             candidate = Variant("", algorithm, on_shared, False).values(choice, defined_anywhere)
             return sign * quartiles(list(candidate.values()))[0] if candidate else math.inf
 
@@ -283,6 +282,7 @@ def medial_axis_line(rows: list[SweepRow]) -> SummaryLine | None:
                           defined_anywhere)
     if line is not None:
         line.rule = "every run of the methods that produce an interior medial axis, on closed true curves"
+        line.figures = (DISTRIBUTIONS_FIGURE, "gallery")
     return line
 
 
@@ -337,6 +337,7 @@ def dominant_points_line(rows: list[SweepRow]) -> SummaryLine | None:
     line = SummaryLine("Dominant points (every run of a method that finds them)",
                        "FOM from the medians: median CR / median ISE", True, _runs_text(comparison), best, runner_up,
                        separated, why + " (head to head on each run's FOM)", cells, comparison)
+    line.figures = (DISTRIBUTIONS_FIGURE, "gallery")
     line.rule = ("every run of the methods that produce dominant points; FOM is taken from the medians of CR and ISE "
                  "because ISE is near 0 on some runs, where one run's CR / ISE would decide a mean of ratios")
     return line
@@ -388,29 +389,42 @@ def speed_lines(suite: ScalingSuite) -> list[SummaryLine]:
     return lines
 
 
-def summary_html(summaries: list[ConditionSummary], other_lines: list[SummaryLine]) -> str:
-    """The summary table, then per condition every method's statistics (in a details element)."""
+def summary_html(summaries: list[ConditionSummary], other_lines: list[SummaryLine], drawn: set[str]) -> str:
+    """The summary table, then per condition every method's statistics (in a details element);
+    rows link to those of their figures that were drawn (stems in `drawn`)."""
     head = ("<thead><tr><th>condition</th><th>measure</th><th>runs</th><th>best</th><th>runner-up</th>"
             "<th>verdict</th></tr></thead>")
     body = []
     for summary in summaries:
         span = len(summary.lines) + 1
-        links = ", ".join(f'<a href="#{stem}">{stem}</a>' for stem in summary.figures)
+        about = _joined([html.escape(summary.rule), f"{summary.runs} runs on {summary.inputs} inputs",
+                         _figure_links(summary.figures, drawn),
+                         f'<a href="#details-{_anchor(summary.name)}">every method</a>'])
         body.append(f'<tr class="condition-start"><th scope="row" rowspan="{span}">{html.escape(summary.name)}'
-                    f'<div class="rule">{html.escape(summary.rule)}; {summary.runs} runs on {summary.inputs} inputs; '
-                    f'figures: {links}; <a href="#details-{_anchor(summary.name)}">every method</a></div></th>'
-                    + _line_cells(summary.lines[0]) + "</tr>")
+                    f'<div class="rule">{about}</div></th>' + _line_cells(summary.lines[0]) + "</tr>")
         for line in summary.lines[1:]:
             body.append("<tr>" + _line_cells(line) + "</tr>")
         body.append(f'<tr class="agreement"><td colspan="5">{html.escape(summary.agreement)}</td></tr>')
     for line in other_lines:
-        links = ", ".join(f'<a href="#{stem}">{stem}</a>' for stem in line.figures)
-        figure_text = f"; figure: {links}" if links else ""
+        details = (f'<a href="#details-{_anchor(line.condition)}">every method</a>' if line.comparison is not None
+                   else "")
+        about = _joined([html.escape(line.rule), _figure_links(line.figures, drawn), details])
         body.append(f'<tr class="condition-start"><th scope="row">{html.escape(line.condition)}<div class="rule">'
-                    f'{html.escape(line.rule)}{figure_text}</div></th>' + _line_cells(line) + "</tr>")
+                    f'{about}</div></th>' + _line_cells(line) + "</tr>")
     table = f'<table class="summary">{head}<tbody>{"".join(body)}</tbody></table>'
     return table + "".join(_details_html(summary) for summary in summaries) + \
         "".join(_line_details_html(line) for line in other_lines if line.comparison is not None)
+
+
+def _figure_links(stems: tuple[str, ...], drawn: set[str]) -> str:
+    """'figures: a, b' (links) for the stems that were drawn, '' if none."""
+    links = ", ".join(f'<a href="#{stem}">{stem}</a>' for stem in stems if stem in drawn)
+    return f"figures: {links}" if links else ""
+
+
+def _joined(parts: list[str]) -> str:
+    """The non-empty parts (HTML), '; ' between them."""
+    return "; ".join(part for part in parts if part)
 
 
 def _anchor(name: str) -> str:

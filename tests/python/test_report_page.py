@@ -16,8 +16,8 @@ from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-FIGURES = ["metrics_by_condition", "error_vs_runtime", "success_vs_epsilon", "l2_vs_density", "robustness",
-           "scaling_runtime", "scaling_memory", "gallery"]
+FIGURES = ["metrics_by_condition", "error_vs_runtime", "medial_axis_dominant_points", "success_vs_epsilon",
+           "l2_vs_density", "robustness", "scaling_runtime", "scaling_memory", "gallery"]
 ALGORITHMS = ["labeling", "crust", "nn-crust", "optimal-transport"]
 # How much worse than the labeling each algorithm is in the fixture (L2 error multiplier).
 ERROR_FACTOR = {"labeling": 1.0, "crust": 1.5, "nn-crust": 1.2, "optimal-transport": 3.0}

@@ -119,6 +119,11 @@ def condition_variants(rows: list[SweepRow], all_settings: dict[str, list[dict]]
                        key=lambda key: key != default_key)
         best = min(order, key=median_of)
         count = len(order)
+        if count == 1:  # the grid ran on other inputs only
+            changed = changed_values_text(json.loads(best), default)
+            label = f"{algorithm} ({changed + '; ' if changed else 'default; '}no grid here)"
+            variants.append(Variant(label, algorithm, by_setting[best], best == default_key))
+            continue
         if best == default_key:
             variants.append(Variant(f"{algorithm} (default, best of {count} settings)", algorithm,
                                     by_setting[default_key], True))
@@ -170,16 +175,25 @@ def _statistics_cell(comparison: Comparison, label: str) -> str:
 
 
 def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str | None, str | None, bool, str]:
-    """(best, runner-up, separated, why): the best by median (then by share near the best), the
-    runner-up the next method of another algorithm. The best is separated when, against every
-    method of another algorithm, it is better on SEPARATING_MARGIN or more shared inputs than it is
-    worse; otherwise the methods it does not beat so tie with it, and the first method outside
-    that group is named."""
+    """(best, runner-up, separated, why): the best by median (then by share near the best) among
+    the methods no other beats head to head (by SEPARATING_MARGIN; all if each is beaten), the
+    runner-up the next method of another algorithm by median. The best is separated when, against
+    every method of another algorithm, it is better on SEPARATING_MARGIN or more shared inputs
+    than it is worse; otherwise the methods it does not beat so tie with it, and the first method
+    outside that group is named."""
     ranking = comparison.ranking
     if not ranking:
         return None, None, False, "no method reports it here"
-    best = ranking[0]
-    others = [label for label in ranking[1:] if algorithm_of[label] != algorithm_of[best]]
+
+    def beats(a: str, b: str) -> bool:
+        h = comparison.pairs[(a, b)]
+        return h.wins - h.losses >= SEPARATING_MARGIN
+
+    # A method another one beats head to head cannot be best, whatever its median (a method that
+    # leaves its hard inputs undefined has a flattering median).
+    unbeaten = [a for a in ranking if not any(beats(b, a) for b in ranking if algorithm_of[b] != algorithm_of[a])]
+    best = (unbeaten or ranking)[0]
+    others = [label for label in ranking if algorithm_of[label] != algorithm_of[best]]
     if not others:
         return best, None, False, f"not separated: only {algorithm_of[best]} reports it here"
     runner_up = others[0]
@@ -189,12 +203,17 @@ def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str |
         h: HeadToHead = comparison.pairs[(best, other)]
         return f"better on {h.wins}, worse on {h.losses} of {h.shared} shared inputs"
 
-    tied = [label for label in others
-            if comparison.pairs[(best, label)].wins - comparison.pairs[(best, label)].losses < SEPARATING_MARGIN]
+    tied = [label for label in others if not beats(best, label)]
+    def _passed_over(top: str) -> str:
+        if top == best or algorithm_of[top] == algorithm_of[best]:
+            return ""
+        return (f"; {top} has the better median but is not best: {best} is {record(top)}, and {top} has no value "
+                f"on {comparison.inputs - comparison.statistics[top].runs} of the {comparison.inputs} inputs")
+
     if not tied:
         return best, runner_up, True, (f"{best} is better by more than {tolerance} than each other method on at least "
                                        f"{SEPARATING_MARGIN} more shared inputs than it is worse; against {runner_up}: "
-                                       f"{record(runner_up)}")
+                                       f"{record(runner_up)}" + _passed_over(ranking[0]))
     beaten = [label for label in others if label not in tied]
     listed = ", ".join(tied[:4]) + (f" and {len(tied) - 4} more" if len(tied) > 4 else "")
     why = f"not separated: {best} is not better than {listed} on {SEPARATING_MARGIN} more shared inputs than " \
@@ -202,7 +221,7 @@ def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str |
           f"{record(tied[0])})"
     if beaten:
         why += f"; this group is ahead of {beaten[0]} ({best} {record(beaten[0])})"
-    return best, runner_up, False, why
+    return best, runner_up, False, why + _passed_over(ranking[0])
 
 
 def _runs_text(comparison: Comparison) -> str:

@@ -275,3 +275,23 @@ def test_speed_is_separated_only_by_repetitions_that_do_not_overlap():
     assert apart.separated and apart.cells["labeling"] == "1.25x"
     overlapping = speed_lines(suite_of({"labeling": [1.2, 1.25, 1.6], "crust": [1.5, 1.6, 1.4]}))[0]
     assert overlapping.best == "labeling" and not overlapping.separated
+
+
+def test_a_median_flattered_by_undefined_hard_inputs_does_not_make_a_method_best():
+    # labeling leaves its five hard inputs undefined (null) and has the lower median over the
+    # five easy ones it scores; crust is better on each of those: crust is best.
+    rows = noisy_rows({"labeling": lambda i: 0.02, "crust": lambda i: 0.005 if i < 5 else 0.5})
+    for r in rows:
+        if r.algorithm == "labeling" and r.seed > 5:
+            r.metrics["l2_error"] = None
+    l2 = line_of(summary_of(rows, "Noise"), "L2 error")
+    assert l2.comparison.ranking[0] == "labeling"
+    assert (l2.best, l2.runner_up, l2.separated) == ("crust", "labeling", True)
+    assert "labeling has the better median but is not best" in l2.verdict
+    assert "no value on 5 of the 10 inputs" in l2.verdict
+
+
+def test_a_grid_method_with_one_setting_under_a_condition_says_so(alpha_catalogue):
+    rows = grid_rows() + [row("alpha-shape", {"family": "rose", "outliers": 0.1, "seed": 1}, {"l2_error": 0.1},
+                              parameters={"alpha": 0.0, "components": 1})]
+    assert [v.label for v in summary_of(rows, "Outliers").variants] == ["alpha-shape (default; no grid here)"]

@@ -174,6 +174,12 @@ def _statistics_cell(comparison: Comparison, label: str) -> str:
             f"{100 * s.within_tolerance:.0f}% of {s.runs} runs{failed} within {m.tolerance_text()} of the best{subset}")
 
 
+def beats(comparison: Comparison, a: str, b: str) -> bool:
+    """a is better than b on at least SEPARATING_MARGIN more of their shared inputs than worse."""
+    h = comparison.pairs[(a, b)]
+    return h.wins - h.losses >= SEPARATING_MARGIN
+
+
 def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str | None, str | None, bool, str]:
     """(best, runner-up, separated, why): the best by median (then by share near the best) among
     the methods no other beats head to head (by SEPARATING_MARGIN; all if each is beaten), the
@@ -185,13 +191,9 @@ def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str |
     if not ranking:
         return None, None, False, "no method reports it here"
 
-    def beats(a: str, b: str) -> bool:
-        h = comparison.pairs[(a, b)]
-        return h.wins - h.losses >= SEPARATING_MARGIN
-
     # A method another one beats head to head cannot be best, whatever its median (a method that
     # leaves its hard inputs undefined has a flattering median).
-    unbeaten = [a for a in ranking if not any(beats(b, a) for b in ranking if algorithm_of[b] != algorithm_of[a])]
+    unbeaten = [a for a in ranking if not any(beats(comparison, b, a) for b in ranking if algorithm_of[b] != algorithm_of[a])]
     best = (unbeaten or ranking)[0]
     others = [label for label in ranking if algorithm_of[label] != algorithm_of[best]]
     if not others:
@@ -203,7 +205,7 @@ def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str |
         h: HeadToHead = comparison.pairs[(best, other)]
         return f"better on {h.wins}, worse on {h.losses} of {h.shared} shared inputs"
 
-    tied = [label for label in others if not beats(best, label)]
+    tied = [label for label in others if not beats(comparison, best, label)]
     def _passed_over(top: str) -> str:
         if top == best or algorithm_of[top] == algorithm_of[best]:
             return ""
@@ -244,18 +246,33 @@ def _accuracy_line(condition: str, metric: Metric, variants: list[Variant], defi
                        why, {label: _statistics_cell(comparison, label) for label in values}, comparison)
 
 
+def leading_algorithms(line: SummaryLine, algorithm_of: dict[str, str]) -> list[str]:
+    """The best method's algorithm and those of the methods it does not beat head to head."""
+    others = [label for label in line.comparison.ranking if algorithm_of[label] != algorithm_of[line.best]]
+    tied = [algorithm_of[label] for label in others if not beats(line.comparison, line.best, label)]
+    return list(dict.fromkeys([algorithm_of[line.best]] + tied))
+
+
 def agreement_text(lines: list[SummaryLine], algorithm_of: dict[str, str]) -> str:
-    """Whether the metrics that separate the methods name the same one."""
-    separated = [line for line in lines if line.separated]
-    unseparated = [line.measure for line in lines if not line.separated]
-    rest = f"; {', '.join(unseparated)} do{'es' if len(unseparated) == 1 else ''} not separate" if unseparated else ""
-    if not separated:
-        return "No metric separates the best method from the runner-up here."
-    winners = {algorithm_of[line.best] for line in separated}
-    if len(winners) == 1:
-        return f"The metrics agree: {winners.pop()} is best on {', '.join(line.measure for line in separated)}{rest}."
-    listed = "; ".join(f"{line.measure}: {line.best}" for line in separated)
-    return f"The metrics disagree: {listed}{rest}."
+    """Whether the metrics lead to the same method: they agree when some algorithm leads on every
+    metric (is best, or not beaten by the best), and disagree otherwise."""
+    scored = [line for line in lines if line.best is not None]
+    if not scored:
+        return "No metric has a value here."
+    leaders = {line.measure: leading_algorithms(line, algorithm_of) for line in scored}
+    common = [a for a in leaders[scored[0].measure] if all(a in group for group in leaders.values())]
+    separated = [line.measure for line in scored if line.separated]
+    how = (f"separated on {', '.join(separated)}" if separated else "no metric separates a single method")
+    if common:
+        names = ", ".join(common[:4]) + (f" and {len(common) - 4} more" if len(common) > 4 else "")
+        verb = "leads" if len(common) == 1 else "lead"
+        return f"The metrics agree: {names} {verb} on every metric ({how})."
+
+    def group_text(group: list[str]) -> str:
+        return group[0] if len(group) == 1 else ", ".join(group[:3]) + (" ..." if len(group) > 3 else "") + " (tie)"
+
+    listed = "; ".join(f"{measure}: {group_text(group)}" for measure, group in leaders.items())
+    return f"The metrics disagree: {listed}."
 
 
 def setting_choice_metric(rows: list[SweepRow]) -> Metric | None:

@@ -69,7 +69,7 @@ def test_known_winner_with_medians_quartiles_shares_and_head_to_head():
     # Hausdorff is the same for all: not separated, and the row says so.
     hausdorff = line_of(noise, "Hausdorff / diagonal")
     assert not hausdorff.separated and hausdorff.verdict.startswith("not separated")
-    assert "The metrics agree: labeling is best on L2 error" in noise.agreement
+    assert noise.agreement == "The metrics agree: labeling leads on every metric (separated on L2 error)."
 
 
 def test_metrics_that_name_different_winners_are_reported_as_disagreeing():
@@ -77,7 +77,8 @@ def test_metrics_that_name_different_winners_are_reported_as_disagreeing():
                       recall_of={"labeling": lambda i: 0.5, "crust": lambda i: 0.99})
     noise = summary_of(rows, "Noise")
     assert line_of(noise, "L2 error").best == "labeling" and line_of(noise, "curve recall").best == "crust"
-    assert noise.agreement.startswith("The metrics disagree: L2 error: labeling; curve recall: crust")
+    assert noise.agreement == ("The metrics disagree: L2 error: labeling; curve recall: crust; "
+                               "Hausdorff / diagonal: crust, labeling (tie).")
 
 
 def test_one_extreme_run_does_not_change_the_verdict():

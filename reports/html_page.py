@@ -14,7 +14,8 @@ body { font-family: "DejaVu Sans", Arial, sans-serif; margin: 2em auto; max-widt
 h1 { margin-bottom: 0.2em; }
 p.sources { color: #555; font-size: 0.92em; }
 nav a { margin-right: 1.2em; }
-table.summary, table.details, table.gallery-links { border-collapse: collapse; font-size: 0.85em; margin: 0.6em 0 1.2em; }
+table.summary, table.details, table.gallery-links { border-collapse: collapse; font-size: 0.85em;
+                                                    margin: 0.6em 0 1.2em; }
 table th, table td { border: 1px solid #ccc; padding: 0.3em 0.5em; text-align: left; vertical-align: top; }
 thead th { background: #f0f0f0; }
 tr.condition-start > * { border-top: 2px solid #888; }

@@ -55,6 +55,7 @@ def metrics_by_condition_figure(summaries: list[ConditionSummary], out_dir: path
                              figsize=(width * columns, (0.3 * len(methods) + 1.5) * grid_rows))
     for ax, metric in zip(axes.flat, metrics):
         medians = np.full((len(methods), len(conditions)), np.nan)
+        notes = {}  # (row, column) -> the default's median on the best setting's inputs
         for column, summary in enumerate(summaries):
             line = next((line for line in summary.lines if line.measure == metric.name), None)
             if line is None:
@@ -63,6 +64,8 @@ def metrics_by_condition_figure(summaries: list[ConditionSummary], out_dir: path
                 variant = _variant_for(summary, algorithm, best_of_grid)
                 if variant is not None and variant.label in line.comparison.statistics:
                     medians[row, column] = line.comparison.statistics[variant.label].median
+                    if variant.label in line.default_on_same_inputs:
+                        notes[(row, column)] = line.default_on_same_inputs[variant.label]
         top = _SCALE_TOP[metric.key]
         colours = plt.get_cmap("RdYlGn" if metric.higher_is_better else "RdYlGn_r")
         shown = np.where(np.isfinite(medians), np.clip(medians, 0, top), np.nan)
@@ -76,6 +79,8 @@ def metrics_by_condition_figure(summaries: list[ConditionSummary], out_dir: path
                     text = "failed"
                 else:
                     text = f"{value:.2g}"
+                if (row, column) in notes:
+                    text += f"\n(default {notes[(row, column)]:.2g})"
                 # Both ends of the colour map are dark: light text there.
                 share = shown[row, column] / top if np.isfinite(shown[row, column]) else 0.5
                 dark = share < 0.2 or share > 0.8
@@ -97,8 +102,10 @@ def metrics_by_condition_figure(summaries: list[ConditionSummary], out_dir: path
                f"curves). Runs per condition (all methods): {runs}. A method with a parameter grid has a second "
                f"row, '{BEST_OF_GRID}', at the setting with the best median of the condition's first defined metric "
                "(L2, else curve recall, else Hausdorff) over the inputs all its settings ran; the summary table names "
-               "the setting and on how many inputs it ran (a grid may cover only some of the inputs its default "
-               "runs on). Chosen on the same runs it is scored on, that row is an optimistic bound. Metrics are defined in reports/README.md.")
+               "the setting and on how many inputs it ran. A grid may cover only some of the inputs its default "
+               "runs on: its cell then shows in brackets the default's median on the same inputs, which is the fair "
+               "comparison with the default. Chosen on the same runs it is scored on, that row is an optimistic "
+               "bound. Metrics are defined in reports/README.md.")
     return save_figure(fig, out_dir, HEATMAP_FIGURE, "Accuracy metrics by condition", caption)
 
 
@@ -175,7 +182,8 @@ def error_runtime_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFi
     caption = ("What each parameter setting costs: one point per algorithm and setting under each condition, at the "
                "median of its runs' reconstruction time (the algorithm's own timing_ms total, without evaluation) "
                "and the median of the condition's first defined metric (L2 error, else curve recall, else Hausdorff; "
-               "a failed run counts as the worst value); the settings of one grid over the inputs they all ran. Ringed: the default setting of a method run with a grid. A line joins the "
+               "a failed run counts as the worst value); the settings of one grid over the inputs they all ran. "
+               "Ringed: the default setting of a method run with a grid. A line joins the "
                "settings of one algorithm's grid that no other of its settings beats on both time and error; the "
                "grey dashed steps are the front over all methods. The times are taken inside each sweep run on a "
                "shared machine and are indicative only: speed is measured by the benchmark (runtime against n).")
@@ -186,7 +194,8 @@ def medial_axis_and_dominant_points_figure(rows: list[SweepRow], out_dir: pathli
     """Box plots over every finished run of the methods that produce them: medial-axis Hausdorff,
     CR and ISE (log axes: one run far out shows as one far point, not as a moved average)."""
     panels = [("medial_axis_hausdorff", "medial-axis Hausdorff / diagonal"),
-              ("compression_ratio", "CR = points / dominant points"), ("integral_square_error", "ISE (squared input units)")]
+              ("compression_ratio", "CR = points / dominant points"),
+              ("integral_square_error", "ISE (squared input units)")]
     drawn = []
     for key, label in panels:
         by_algorithm = collections.defaultdict(list)

@@ -149,6 +149,7 @@ class SummaryLine:
     verdict: str
     cells: dict[str, str]  # what the page shows for each method: value and spread
     comparison: Comparison | None = None
+    default_on_same_inputs: dict[str, float] = dataclasses.field(default_factory=dict)  # per best-of-grid label
     figures: tuple[str, ...] = ()
     rule: str = ""
 
@@ -193,7 +194,8 @@ def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str |
 
     # A method another one beats head to head cannot be best, whatever its median (a method that
     # leaves its hard inputs undefined has a flattering median).
-    unbeaten = [a for a in ranking if not any(beats(comparison, b, a) for b in ranking if algorithm_of[b] != algorithm_of[a])]
+    unbeaten = [a for a in ranking
+                if not any(beats(comparison, b, a) for b in ranking if algorithm_of[b] != algorithm_of[a])]
     best = (unbeaten or ranking)[0]
     others = [label for label in ranking if algorithm_of[label] != algorithm_of[best]]
     if not others:
@@ -241,9 +243,20 @@ def _accuracy_line(condition: str, metric: Metric, variants: list[Variant], defi
     comparison = compare(values, metric)
     algorithm_of = {v.label: v.algorithm for v in variants}
     best, runner_up, separated, why = verdict(comparison, algorithm_of)
+    cells = {label: _statistics_cell(comparison, label) for label in values}
+    # A grid's best setting may run on fewer inputs than its default: its default's median on the
+    # same inputs says what the setting gains there.
+    default_here = {}
+    for v in variants:
+        default = next((d for d in variants if d.algorithm == v.algorithm and d.default and d is not v), None)
+        if not v.default and v.label in values and default is not None and default.label in values:
+            same = [values[default.label][key] for key in values[v.label] if key in values[default.label]]
+            if same:
+                default_here[v.label] = quartiles(same)[0]
+                cells[v.label] += (f"; the default on the same {len(same)} inputs: median "
+                                   f"{metric.format(default_here[v.label])}")
     return SummaryLine(condition, metric.name, metric.higher_is_better, _runs_text(comparison), best, runner_up,
-                       separated,
-                       why, {label: _statistics_cell(comparison, label) for label in values}, comparison)
+                       separated, why, cells, comparison, default_on_same_inputs=default_here)
 
 
 def leading_algorithms(line: SummaryLine, algorithm_of: dict[str, str]) -> list[str]:

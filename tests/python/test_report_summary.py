@@ -259,7 +259,8 @@ def test_a_best_setting_run_on_fewer_inputs_says_on_how_many(alpha_catalogue):
             rows.append(row("alpha-shape", settings, {"l2_error": 0.05}, parameters={"alpha": 0.02, "components": 1}))
     l2 = line_of(summary_of(rows, "Noise"), "L2 error")
     assert l2.best == "alpha-shape (alpha=0.02; best of 2)"
-    assert l2.cells[l2.best].endswith("(on 3 of the 6 inputs)")
+    assert l2.cells[l2.best].endswith("(on 3 of the 6 inputs); the default on the same 3 inputs: median 0.3")
+    assert l2.default_on_same_inputs == {l2.best: pytest.approx(0.3)}
 
 
 def suite_of(times_by_algorithm):

@@ -66,8 +66,10 @@ def write_page(out_dir: pathlib.Path, figures: list[SavedFigure], summary_html: 
 <p>From the same files as the figures below; each condition's rule is stated in its cell and in
 reports/README.md, and each row links to the figures it summarises. Per measure: every method's
 median over its runs with the interquartile range [25%, 75%], and the share of its runs within
-the stated tolerance of the best method on the same input; the best method has the best median
-(then the larger share), the runner-up is the next method of another algorithm. Best and
+the stated tolerance of the best method on the same input. Only methods scored on at least 90%
+of the condition's inputs are ranked (medians over different inputs do not compare); the best
+has the best median (then the larger share) among those no other beats head to head, the
+runner-up is the next ranked method of another algorithm. Best and
 runner-up are <em>separated</em> (green) when, against every other method, the best is better by
 more than the tolerance on at least 3 more of the inputs both ran than it is worse, so that no
 single run can reverse the verdict; otherwise (amber) the row says why not.
@@ -75,7 +77,8 @@ A failed run (error, timeout, crash) counts as the worst value; a metric a metho
 define (edge F1 with vertices of its own, L2 on open curves) leaves it out of that measure. No
 mean is used: one run cannot move a median or more than one head-to-head count. A method run
 with a parameter grid appears at its default and at the grid's best setting under the condition
-(labelled with the winning values; chosen on the same runs, so an optimistic bound). Dominant
+(labelled with the winning values; chosen on the same runs, so an optimistic bound; where the grid
+ran on fewer inputs, with the default's median on those same inputs). Dominant
 points: FOM is median CR / median ISE, because ISE is near 0 on some runs and one run's ratio
 would decide a mean of ratios.</p>
 {summary_html}

@@ -47,6 +47,8 @@ DISTRIBUTIONS_FIGURE = "medial_axis_dominant_points"
 # than it is worse: one run turned from a win into a loss moves the difference by 2, so no single
 # run can reverse a verdict.
 SEPARATING_MARGIN = 3
+# A method is ranked when it has a value (or a failure) on at least this share of the inputs.
+RANKED_COVERAGE = 0.9
 
 
 def run_value(r: SweepRow, metric: Metric) -> float | None:
@@ -181,51 +183,59 @@ def beats(comparison: Comparison, a: str, b: str) -> bool:
     return h.wins - h.losses >= SEPARATING_MARGIN
 
 
-def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str | None, str | None, bool, str]:
-    """(best, runner-up, separated, why): the best by median (then by share near the best) among
-    the methods no other beats head to head (by SEPARATING_MARGIN; all if each is beaten), the
-    runner-up the next method of another algorithm by median. The best is separated when, against
-    every method of another algorithm, it is better on SEPARATING_MARGIN or more shared inputs
-    than it is worse; otherwise the methods it does not beat so tie with it, and the first method
-    outside that group is named."""
-    ranking = comparison.ranking
-    if not ranking:
-        return None, None, False, "no method reports it here"
+def ranked(comparison: Comparison) -> list[str]:
+    """The methods scored on RANKED_COVERAGE of the inputs or more, by rank (all if none is):
+    medians over different inputs do not compare, so a method scored on few of them (a grid run on
+    a subset, a metric undefined on the hard inputs) is shown but not ranked."""
+    covering = [a for a in comparison.ranking if comparison.statistics[a].runs >= RANKED_COVERAGE * comparison.inputs]
+    return covering or comparison.ranking
 
-    # A method another one beats head to head cannot be best, whatever its median (a method that
-    # leaves its hard inputs undefined has a flattering median).
+
+def verdict(comparison: Comparison, algorithm_of: dict[str, str]) -> tuple[str | None, str | None, bool, str]:
+    """(best, runner-up, separated, why): among the methods scored on RANKED_COVERAGE of the inputs
+    or more (all if none is), the best by median (then by share near the best) of those no other
+    beats head to head (by SEPARATING_MARGIN; all if each is beaten), the runner-up the next method
+    of another algorithm by median. The best is separated when it beats every ranked method of
+    another algorithm; otherwise the methods it does not beat tie with it, and the first method
+    outside that group is named."""
+    if not comparison.ranking:
+        return None, None, False, "no method reports it here"
+    ranking = ranked(comparison)
+    # A method another one beats head to head cannot be best, whatever its median.
     unbeaten = [a for a in ranking
                 if not any(beats(comparison, b, a) for b in ranking if algorithm_of[b] != algorithm_of[a])]
     best = (unbeaten or ranking)[0]
     others = [label for label in ranking if algorithm_of[label] != algorithm_of[best]]
-    if not others:
-        return best, None, False, f"not separated: only {algorithm_of[best]} reports it here"
-    runner_up = others[0]
-    tolerance = comparison.metric.tolerance_text()
 
     def record(other: str) -> str:
         h: HeadToHead = comparison.pairs[(best, other)]
         return f"better on {h.wins}, worse on {h.losses} of {h.shared} shared inputs"
 
+    top = comparison.ranking[0]
+    if top == best:
+        passed_over = ""
+    elif top not in ranking:
+        passed_over = (f"; {top} has a better median on only {comparison.statistics[top].runs} of the "
+                       f"{comparison.inputs} inputs, too few to rank (at least {100 * RANKED_COVERAGE:g}%)")
+    else:
+        passed_over = f"; {top} has the better median but is not best: {best} is {record(top)}"
+    if not others:
+        alone = all(algorithm_of[label] == algorithm_of[best] for label in comparison.ranking)
+        return best, None, False, (f"not separated: only {algorithm_of[best]} "
+                                   f"{'reports it' if alone else 'is ranked'} here{passed_over}")
+    runner_up = others[0]
     tied = [label for label in others if not beats(comparison, best, label)]
-    def _passed_over(top: str) -> str:
-        if top == best or algorithm_of[top] == algorithm_of[best]:
-            return ""
-        return (f"; {top} has the better median but is not best: {best} is {record(top)}, and {top} has no value "
-                f"on {comparison.inputs - comparison.statistics[top].runs} of the {comparison.inputs} inputs")
-
     if not tied:
-        return best, runner_up, True, (f"{best} is better by more than {tolerance} than each other method on at least "
-                                       f"{SEPARATING_MARGIN} more shared inputs than it is worse; against {runner_up}: "
-                                       f"{record(runner_up)}" + _passed_over(ranking[0]))
+        return best, runner_up, True, (f"{best} is better by more than {comparison.metric.tolerance_text()} than each "
+                                       f"other method on at least {SEPARATING_MARGIN} more shared inputs than it is "
+                                       f"worse; against {runner_up}: {record(runner_up)}{passed_over}")
     beaten = [label for label in others if label not in tied]
     listed = ", ".join(tied[:4]) + (f" and {len(tied) - 4} more" if len(tied) > 4 else "")
-    why = f"not separated: {best} is not better than {listed} on {SEPARATING_MARGIN} more shared inputs than " \
-          f"worse (against {tied[0]}: " \
-          f"{record(tied[0])})"
+    why = (f"not separated: {best} is not better than {listed} on {SEPARATING_MARGIN} more shared inputs than "
+           f"worse (against {tied[0]}: {record(tied[0])})")
     if beaten:
         why += f"; this group is ahead of {beaten[0]} ({best} {record(beaten[0])})"
-    return best, runner_up, False, why + _passed_over(ranking[0])
+    return best, runner_up, False, why + passed_over
 
 
 def _runs_text(comparison: Comparison) -> str:
@@ -260,8 +270,8 @@ def _accuracy_line(condition: str, metric: Metric, variants: list[Variant], defi
 
 
 def leading_algorithms(line: SummaryLine, algorithm_of: dict[str, str]) -> list[str]:
-    """The best method's algorithm and those of the methods it does not beat head to head."""
-    others = [label for label in line.comparison.ranking if algorithm_of[label] != algorithm_of[line.best]]
+    """The best method's algorithm and those of the ranked methods it does not beat head to head."""
+    others = [label for label in ranked(line.comparison) if algorithm_of[label] != algorithm_of[line.best]]
     tied = [algorithm_of[label] for label in others if not beats(line.comparison, line.best, label)]
     return list(dict.fromkeys([algorithm_of[line.best]] + tied))
 

@@ -258,9 +258,10 @@ def test_a_best_setting_run_on_fewer_inputs_says_on_how_many(alpha_catalogue):
         if seed <= 3:
             rows.append(row("alpha-shape", settings, {"l2_error": 0.05}, parameters={"alpha": 0.02, "components": 1}))
     l2 = line_of(summary_of(rows, "Noise"), "L2 error")
-    assert l2.best == "alpha-shape (alpha=0.02; best of 2)"
-    assert l2.cells[l2.best].endswith("(on 3 of the 6 inputs); the default on the same 3 inputs: median 0.3")
-    assert l2.default_on_same_inputs == {l2.best: pytest.approx(0.3)}
+    tuned = "alpha-shape (alpha=0.02; best of 2)"
+    assert l2.cells[tuned].endswith("(on 3 of the 6 inputs); the default on the same 3 inputs: median 0.3")
+    assert l2.default_on_same_inputs == {tuned: pytest.approx(0.3)}
+    assert l2.best == "alpha-shape (default)"  # the tuned setting covers too few inputs to be ranked
 
 
 def suite_of(times_by_algorithm):
@@ -279,21 +280,43 @@ def test_speed_is_separated_only_by_repetitions_that_do_not_overlap():
     assert overlapping.best == "labeling" and not overlapping.separated
 
 
-def test_a_median_flattered_by_undefined_hard_inputs_does_not_make_a_method_best():
+def test_a_method_scored_on_few_inputs_is_shown_but_not_ranked():
     # labeling leaves its five hard inputs undefined (null) and has the lower median over the
-    # five easy ones it scores; crust is better on each of those: crust is best.
+    # five easy ones it scores; crust, scored everywhere, is best.
     rows = noisy_rows({"labeling": lambda i: 0.02, "crust": lambda i: 0.005 if i < 5 else 0.5})
     for r in rows:
         if r.algorithm == "labeling" and r.seed > 5:
             r.metrics["l2_error"] = None
     l2 = line_of(summary_of(rows, "Noise"), "L2 error")
+    assert l2.comparison.ranking[0] == "labeling" and "labeling" in l2.cells
+    assert (l2.best, l2.runner_up) == ("crust", None)
+    assert "labeling has a better median on only 5 of the 10 inputs, too few to rank (at least 90%)" in l2.verdict
+
+
+def test_a_method_beaten_head_to_head_is_not_best_whatever_its_median():
+    # labeling's median (0.025) is below crust's (0.03), but crust is better by more than the
+    # tolerance on three inputs and within it on the rest.
+    rows = noisy_rows({"labeling": lambda i: 0.025, "crust": lambda i: 0.0 if i < 3 else 0.03})
+    l2 = line_of(summary_of(rows, "Noise"), "L2 error")
     assert l2.comparison.ranking[0] == "labeling"
     assert (l2.best, l2.runner_up, l2.separated) == ("crust", "labeling", True)
-    assert "labeling has the better median but is not best" in l2.verdict
-    assert "no value on 5 of the 10 inputs" in l2.verdict
+    assert "labeling has the better median but is not best: crust is better on 3, worse on 0" in l2.verdict
 
 
 def test_a_grid_method_with_one_setting_under_a_condition_says_so(alpha_catalogue):
     rows = grid_rows() + [row("alpha-shape", {"family": "rose", "outliers": 0.1, "seed": 1}, {"l2_error": 0.1},
                               parameters={"alpha": 0.0, "components": 1})]
     assert [v.label for v in summary_of(rows, "Outliers").variants] == ["alpha-shape (default; no grid here)"]
+
+
+def test_agreement_counts_only_ranked_methods(alpha_catalogue):
+    rows = []
+    for seed in range(1, 7):
+        settings = {"family": "rose", "noise": 0.1, "seed": seed}
+        rows.append(row("crust", settings, {"l2_error": 0.05}))
+        rows.append(row("alpha-shape", settings, {"l2_error": 0.3}, parameters={"alpha": 0.0, "components": 1}))
+        if seed <= 3:  # better than crust, but on too few inputs to be ranked
+            rows.append(row("alpha-shape", settings, {"l2_error": 0.01}, parameters={"alpha": 0.02, "components": 1}))
+    noise = summary_of(rows, "Noise")
+    assert line_of(noise, "L2 error").best == "crust"
+    assert noise.agreement == "The metrics agree: crust leads on every metric (separated on L2 error)."

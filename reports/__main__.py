@@ -23,8 +23,8 @@ from reports.reconstructions import read_reconstructions
 from reports.scaling_figures import memory_figure, runtime_figure
 from reports.scaling_results import read_scaling_suite
 from reports.style import use_catalogue
-from reports.summary_table import condition_summaries, dominant_points_line, medial_axis_line, speed_lines, \
-    summary_html
+from reports.summary_html import summary_html
+from reports.summary_table import condition_summaries, dominant_points_line, medial_axis_line, speed_lines
 from reports.sweep_results import read_sweep_rows
 
 

@@ -16,11 +16,15 @@ import sys
 from reports.accuracy_figures import l2_density_figure, robustness_figure, success_epsilon_figure
 from reports.gallery_figure import gallery_figure
 from reports.html_page import write_page
+from reports.metric_figures import error_runtime_figure, medial_axis_and_dominant_points_figure, \
+    metrics_by_condition_figure
+from reports.parameter_settings import default_rows, use_catalogue_defaults
 from reports.reconstructions import read_reconstructions
 from reports.scaling_figures import memory_figure, runtime_figure
 from reports.scaling_results import read_scaling_suite
 from reports.style import use_catalogue
-from reports.summary_table import summary_lines, summary_table_html
+from reports.summary_html import summary_html
+from reports.summary_table import condition_summaries, dominant_points_line, medial_axis_line, speed_lines
 from reports.sweep_results import read_sweep_rows
 
 
@@ -28,25 +32,37 @@ def build_report(out_dir: pathlib.Path, results: pathlib.Path | None, benchmark:
                  reconstructions: pathlib.Path | None) -> pathlib.Path:
     out_dir.mkdir(parents=True, exist_ok=True)
     figures, missing, sources = [], [], []
-    rows = []
+    summaries, other_lines = [], []
     if results is not None:
         rows = read_sweep_rows(results)
         sources.append(f"sweep results {results} ({len(rows)} rows)")
-        for make, what in [(success_epsilon_figure, "success rate against epsilon: no clean epsilon-sampled runs"),
-                           (l2_density_figure, "L2 error against density: no clean runs with a fixed point count"),
-                           (robustness_figure, "robustness: no runs with noise or outliers")]:
-            figure = make(rows, out_dir)
+        summaries = condition_summaries(rows)
+        other_lines = [line for line in (medial_axis_line(rows), dominant_points_line(rows)) if line is not None]
+        at_default = default_rows(rows)
+        without_default = sorted({r.algorithm for r in rows} - {r.algorithm for r in at_default})
+        if without_default:
+            missing.append(f"Not drawn at their defaults (the parameter grid leaves the default out): "
+                           f"{', '.join(without_default)}; they are in the summary and the error-runtime figure.")
+        for make, source, what in [
+                (metrics_by_condition_figure, summaries, "the metrics by condition: no run under a summary condition"),
+                (error_runtime_figure, rows, "error against runtime: no run under a summary condition"),
+                (medial_axis_and_dominant_points_figure, rows,
+                 "medial axis and dominant points: no run produced either"),
+                (success_epsilon_figure, at_default, "success rate against epsilon: no clean epsilon-sampled runs"),
+                (l2_density_figure, at_default, "L2 error against density: no clean runs with a fixed point count"),
+                (robustness_figure, at_default, "robustness: no runs with noise or outliers")]:
+            figure = make(source, out_dir)
             if figure is None:
                 missing.append(f"Not drawn: {what} in {results}.")
             else:
                 figures.append(figure)
     else:
         missing.append("Not drawn: the accuracy figures (no sweep results given).")
-    suite = None
     if benchmark is not None:
         suite = read_scaling_suite(benchmark)
         sources.append(f"scaling benchmark {benchmark} ({len(suite.runs)} runs)")
         figures += [runtime_figure(suite, out_dir), memory_figure(suite, out_dir)]
+        other_lines += speed_lines(suite)
     else:
         missing.append("Not drawn: runtime and memory against n (no benchmark JSON given).")
     if reconstructions is not None:
@@ -58,7 +74,8 @@ def build_report(out_dir: pathlib.Path, results: pathlib.Path | None, benchmark:
             missing.append(f"Not drawn: the gallery (no reconstruction JSON in {reconstructions}).")
     else:
         missing.append("Not drawn: the gallery (no reconstruction directory given).")
-    return write_page(out_dir, figures, summary_table_html(summary_lines(rows, suite)), sources, missing)
+    drawn = {figure.stem for figure in figures}
+    return write_page(out_dir, figures, summary_html(summaries, other_lines, drawn), sources, missing)
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -69,14 +86,21 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--reconstructions", type=pathlib.Path,
                         help="directory of `curvebench reconstruct --output` JSON files (searched recursively)")
     parser.add_argument("--catalogue", type=pathlib.Path,
-                        help="`curvebench list --json` output: the algorithms' order in tables and legends")
+                        help="`curvebench list --json` output: the algorithms' order in tables and legends and "
+                             "their default parameters (needed when the results hold parameter grids)")
     args = parser.parse_args(argv)
     for given in (args.results, args.benchmark, args.reconstructions, args.catalogue):
         if given is not None and not given.exists():
             parser.error(f"{given}: no such file or directory")
     if args.catalogue is not None:
-        use_catalogue(json.loads(args.catalogue.read_text()))
-    print(build_report(args.out, args.results, args.benchmark, args.reconstructions))
+        catalogue = json.loads(args.catalogue.read_text())
+        use_catalogue(catalogue)
+        use_catalogue_defaults(catalogue)
+    try:
+        print(build_report(args.out, args.results, args.benchmark, args.reconstructions))
+    except ValueError as e:
+        print(f"reports: {e}", file=sys.stderr)
+        return 1
     return 0
 
 

@@ -43,11 +43,6 @@ def epsilon_rows(rows: list[SweepRow]) -> list[SweepRow]:
     return [r for r in rows if r.epsilon is not None and r.noise == 0 and r.outliers == 0 and r.smooth]
 
 
-def corner_rows(rows: list[SweepRow]) -> list[SweepRow]:
-    """Clean epsilon-samples of curves with sharp corners, where the guarantees do not apply."""
-    return [r for r in rows if r.epsilon is not None and r.noise == 0 and r.outliers == 0 and not r.smooth]
-
-
 def noise_rows(rows: list[SweepRow]) -> list[SweepRow]:
     """Runs without outliers whose settings vary the noise (noise-free runs of the same shapes included)."""
     noisy_shapes = {r.shape for r in rows if r.noise > 0 and r.outliers == 0}

@@ -4,7 +4,9 @@ medial axis and dominant points where the algorithm produces them."""
 from __future__ import annotations
 
 import collections
+import html
 import pathlib
+import shutil
 import textwrap
 
 import numpy as np
@@ -83,4 +85,38 @@ def gallery_figure(views: list[ReconstructionView], out_dir: pathlib.Path) -> Sa
                f"by {', '.join(algorithms)}, drawn from the reconstruction JSON "
                "files: grey dots are the samples, the coloured edges the reconstructed curve; the green medial axis "
                "and yellow dominant points appear only for algorithms that produce them.")
-    return save_figure(fig, out_dir, "gallery", "Gallery of reconstructions", caption)
+    figure = save_figure(fig, out_dir, "gallery", "Gallery of reconstructions", caption)
+    figure.extra_html = full_size_links(views, shapes, algorithms, out_dir)
+    return figure
+
+
+GALLERY_DIRECTORY = "gallery"
+
+
+def full_size_links(views: list[ReconstructionView], shapes: list[str], algorithms: list[str],
+                    out_dir: pathlib.Path) -> str:
+    """A table of links, shapes by algorithms, to each reconstruction's own SVG (written by
+    `curvebench reconstruct --svg` beside its JSON, copied into out_dir/gallery/ so that the
+    report directory stands alone); a cell without one says why."""
+    by_cell = {(view.shape, view.algorithm): view for view in views}
+    (out_dir / GALLERY_DIRECTORY).mkdir(exist_ok=True)
+    head = "".join(f"<th>{html.escape(a)}</th>" for a in algorithms)
+    body = []
+    for shape in shapes:
+        cells = []
+        for algorithm in algorithms:
+            view = by_cell.get((shape, algorithm))
+            if view is None:
+                cells.append('<td class="missing">not run</td>')
+            elif view.status != "ok":
+                cells.append(f'<td class="missing">{html.escape(view.status)}</td>')
+            elif view.svg is None:
+                cells.append('<td class="missing">no SVG</td>')
+            else:
+                target = f"{GALLERY_DIRECTORY}/{view.svg.name}"
+                shutil.copyfile(view.svg, out_dir / target)
+                cells.append(f'<td><a href="{html.escape(target)}">SVG</a></td>')
+        body.append(f"<tr><th scope=\"row\">{html.escape(shape)}</th>{''.join(cells)}</tr>")
+    return (f'<p>Each reconstruction at full size, as SVG (points, curve, interior medial axis and dominant points '
+            f'where the algorithm gives them):</p><table class="gallery-links"><thead><tr><th>shape</th>{head}</tr>'
+            f'</thead><tbody>{"".join(body)}</tbody></table>')

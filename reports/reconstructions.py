@@ -46,6 +46,7 @@ class ReconstructionView:
     medial_axis_vertices: np.ndarray | None = None
     medial_axis_edges: np.ndarray | None = None
     dominant_points: np.ndarray | None = None  # indices into points
+    svg: pathlib.Path | None = None  # `curvebench reconstruct --svg` beside the JSON (same name, .svg)
 
 
 def _resolve_points_path(json_path: pathlib.Path, named: str) -> pathlib.Path:
@@ -71,8 +72,9 @@ def _view(path: pathlib.Path, data: dict) -> ReconstructionView:
         points = np.zeros((0, 2))  # a failed run may name a file that was never readable
     else:
         points = read_points_file(points_path)
+    svg = path.with_suffix(".svg")
     view = ReconstructionView(algorithm=data["algorithm"], shape=pathlib.Path(named_input).stem, points=points,
-                              status=status, message=data.get("message", ""))
+                              status=status, message=data.get("message", ""), svg=svg if svg.is_file() else None)
     if "curve" in data:
         curve = data["curve"]
         if "vertices" in curve:

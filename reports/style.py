@@ -93,6 +93,7 @@ class SavedFigure:
     stem: str
     title: str
     caption: str
+    extra_html: str = ""  # shown below the caption (the gallery's links to full-size pictures)
 
 
 def save_figure(fig, out_dir: pathlib.Path, stem: str, title: str, caption: str) -> SavedFigure:

@@ -52,6 +52,11 @@ class SweepRow:
         return self.status == "ok"
 
     @property
+    def input_key(self) -> str:
+        """The same text for every run of the same input (generator settings and seed)."""
+        return json.dumps(self.settings, sort_keys=True)
+
+    @property
     def smooth(self) -> bool:
         return self.family not in SHARP_CORNER_FAMILIES
 
@@ -118,7 +123,7 @@ def read_sweep_rows(path: pathlib.Path) -> list[SweepRow]:
     true_curves = {}
     for r in rows:
         if r.metric("true_curves") is not None:
-            true_curves[json.dumps(r.settings, sort_keys=True)] = int(r.metric("true_curves"))
+            true_curves[r.input_key] = int(r.metric("true_curves"))
     for r in rows:
-        r.true_curves = true_curves.get(json.dumps(r.settings, sort_keys=True))
+        r.true_curves = true_curves.get(r.input_key)
     return rows

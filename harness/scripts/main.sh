@@ -75,9 +75,11 @@ done
 algorithms=$("$curvebench" list --external "$config" | grep -v '^ ')
 for points in "$out"/gallery/*; do
   for algorithm in $algorithms; do
-    # A failed reconstruction still writes its error record, which the gallery shows.
+    # A failed reconstruction still writes its error record, which the gallery shows; the SVG
+    # beside the JSON is the full-size picture the report links.
+    name="$out/gallery/$(basename "${points%.*}").$algorithm"
     "$curvebench" reconstruct --external "$config" --algorithm "$algorithm" --input "$points" \
-      --output "$out/gallery/$(basename "${points%.*}").$algorithm.json" 2>/dev/null || true
+      --output "$name.json" --svg "$name.svg" 2>/dev/null || true
   done
 done
 

@@ -14,7 +14,6 @@ sys.path.insert(0, str(ROOT))  # the reports package lives at the repository roo
 from reports.reconstructions import read_points_file, read_reconstructions  # noqa: E402
 from reports.scaling_figures import log_log_slope  # noqa: E402
 from reports.scaling_results import read_scaling_suite  # noqa: E402
-from reports.summary_table import summary_lines, summary_table_html  # noqa: E402
 from reports.sweep_results import read_sweep_rows  # noqa: E402
 
 
@@ -124,31 +123,6 @@ def test_sweep_reader_names_the_bad_line(tmp_path):
     path.write_text(sweep_line("labeling", {"family": "circle"}) + "\n{\"status\": \"ok\"}\n")
     with pytest.raises(ValueError, match=r"results.jsonl:2: not a sweep row"):
         read_sweep_rows(path)
-
-
-def test_summary_names_the_best_method_and_counts_failures_against_it(tmp_path):
-    lines = []
-    for epsilon in (0.1, 0.2, 0.3):
-        for seed in (1, 2):
-            settings = {"family": "circle", "epsilon": epsilon, "seed": seed}
-            topology = {"true_curves": 1, "manifold": True, "components": 1, "closed_components": 1}
-            lines.append(sweep_line("labeling", settings, metrics={**topology, "exact": True}))
-            # nn-crust fails once at 0.2: its largest all-exact epsilon is 0.1, even though 0.3 is exact.
-            failed = epsilon == 0.2 and seed == 2
-            lines.append(sweep_line("nn-crust", settings, status="crash" if failed else "ok",
-                                    metrics={**topology, "exact": True}))
-            lines.append(sweep_line("optimal-transport", settings, metrics={**topology, "manifold": epsilon < 0.3}))
-    path = tmp_path / "results.jsonl"
-    path.write_text("\n".join(lines) + "\n")
-    by_condition = {line.condition: line for line in summary_lines(read_sweep_rows(path), None)}
-    exact = by_condition["Clean smooth curves (epsilon-samples)"]
-    assert exact.values == {"labeling": 0.3, "nn-crust": 0.1}  # exactness is undefined for optimal-transport
-    assert exact.ranking() == ["labeling", "nn-crust"]
-    topology = by_condition["One curve, all epsilons"]
-    assert topology.values == pytest.approx({"labeling": 100.0, "nn-crust": 100 * 5 / 6,
-                                             "optimal-transport": 100 * 4 / 6})
-    table = summary_table_html(list(by_condition.values()))
-    assert '<td class="winner">labeling</td><td>nn-crust</td>' in table
 
 
 @pytest.fixture(scope="module")

@@ -16,7 +16,8 @@ from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-FIGURES = ["success_vs_epsilon", "l2_vs_density", "robustness", "scaling_runtime", "scaling_memory", "gallery"]
+FIGURES = ["metrics_by_condition", "error_vs_runtime", "medial_axis_dominant_points", "success_vs_epsilon",
+           "l2_vs_density", "robustness", "scaling_runtime", "scaling_memory", "gallery"]
 ALGORITHMS = ["labeling", "crust", "nn-crust", "optimal-transport"]
 # How much worse than the labeling each algorithm is in the fixture (L2 error multiplier).
 ERROR_FACTOR = {"labeling": 1.0, "crust": 1.5, "nn-crust": 1.2, "optimal-transport": 3.0}
@@ -39,8 +40,12 @@ def curve_metrics(algorithm, l2, true_curves=1, exact=True):
     metrics = {"oracle_l2_error": l2 / 2, "true_curves": true_curves, "l2_error": 0.0 if exact else l2,
                "hausdorff": l2 / 3, "manifold": exact, "components": true_curves if exact else true_curves + 1,
                "closed_components": true_curves if exact else 0}
+    metrics["curve_recall"] = 1.0 if exact else 0.95
     if algorithm != "optimal-transport":  # interpolating methods only
-        metrics.update({"exact": exact, "edge_precision": 1.0 if exact else 0.9, "edge_recall": 1.0 if exact else 0.8})
+        metrics.update({"exact": exact, "edge_precision": 1.0 if exact else 0.9, "edge_recall": 1.0 if exact else 0.8,
+                        "edge_f1": 1.0 if exact else 2 * 0.9 * 0.8 / 1.7})
+    else:
+        metrics["edge_f1"] = None  # vertices of its own
     if algorithm == "labeling":
         metrics.update({"medial_axis_hausdorff": 0.02, "dominant_points": 12, "compression_ratio": 9.0,
                         "integral_square_error": 0.03, "figure_of_merit": 300.0})
@@ -70,6 +75,18 @@ def fixture_rows():
                 l2 = ERROR_FACTOR[algorithm] * (0.001 + outliers)
                 exact = outliers == 0 and exact_up_to[algorithm] >= 0.2
                 rows.append(sweep_row(algorithm, {"family": "rose", "shape": {"k": 3}, "outliers": outliers}, seed, curve_metrics(algorithm, l2, exact=exact)))
+    # alpha-shape with a grid: alpha = 0.5 is best under noise, its default (0) with outliers.
+    for seed in (1, 2):
+        for alpha in (0.0, 0.5):
+            parameters = {"alpha": alpha, "components": 1}
+            for noise in (0.02, 0.05):
+                l2 = (0.002 if alpha else 0.3) + noise
+                rows.append({**sweep_row("alpha-shape", {"family": "ellipse", "shape": {"a": 2, "b": 1}, "noise": noise},
+                                         seed, curve_metrics("alpha-shape", l2, exact=False)), "parameters": parameters})
+            for outliers in (0.1, 0.2):
+                l2 = (0.5 if alpha else 0.01) + outliers
+                rows.append({**sweep_row("alpha-shape", {"family": "rose", "shape": {"k": 3}, "outliers": outliers},
+                                         seed, curve_metrics("alpha-shape", l2, exact=False)), "parameters": parameters})
     rows.append(sweep_row("crust", {"family": "rose", "epsilon": 0.5}, 3, {}, status="timeout"))
     rows.append(sweep_row("nn-crust", {"family": "rose", "shape": {"k": 3}, "outliers": 0.2}, 3, {}, status="crash"))
     return rows
@@ -117,6 +134,10 @@ def write_reconstructions(directory: pathlib.Path):
         }
         for algorithm, record in records.items():
             (directory / f"{shape}.{algorithm}.json").write_text(json.dumps({"algorithm": algorithm, **common, **record}))
+            if algorithm != "crust":  # as `curvebench reconstruct --svg` writes it; crust's is missing
+                (directory / f"{shape}.{algorithm}.svg").write_text(
+                    f'<svg xmlns="http://www.w3.org/2000/svg" width="400" height="400"><title>{algorithm}: {shape}</title>'
+                    '<circle cx="200" cy="200" r="150" fill="none" stroke="black"/></svg>')
         error = {"algorithm": "nn-crust", "input": {"path": f"{shape}.xy"}, "status": "error",
                  "message": f"{shape}.xy: a made-up failure for the gallery"}
         (directory / f"{shape}.nn-crust.json").write_text(json.dumps(error))
@@ -129,12 +150,16 @@ def report_inputs(tmp_path_factory):
     (directory / "results.jsonl").write_text("".join(json.dumps(row) + "\n" for row in fixture_rows()))
     (directory / "scaling.json").write_text(json.dumps(benchmark_json()))
     write_reconstructions(directory / "reconstructions")
+    (directory / "catalogue.json").write_text(json.dumps(
+        [{"name": name, "parameters": []} for name in ALGORITHMS] +
+        [{"name": "alpha-shape", "parameters": [{"name": "alpha", "default": 0.0}, {"name": "components", "default": 1}]}]))
     return directory
 
 
 def build(inputs: pathlib.Path, out: pathlib.Path, *sections):
     arguments = {"results": ["--results", inputs / "results.jsonl"], "benchmark": ["--benchmark", inputs / "scaling.json"],
-                 "reconstructions": ["--reconstructions", inputs / "reconstructions"]}
+                 "reconstructions": ["--reconstructions", inputs / "reconstructions"],
+                 "catalogue": ["--catalogue", inputs / "catalogue.json"]}
     command = [sys.executable, "-m", "reports", "--out", out]
     for section in sections:
         command += arguments[section]
@@ -147,7 +172,8 @@ def build(inputs: pathlib.Path, out: pathlib.Path, *sections):
 
 @pytest.fixture(scope="module")
 def report(report_inputs, tmp_path_factory):
-    return build(report_inputs, tmp_path_factory.mktemp("report"), "results", "benchmark", "reconstructions")
+    return build(report_inputs, tmp_path_factory.mktemp("report"), "results", "benchmark", "reconstructions",
+                 "catalogue")
 
 
 class PageReferences(html.parser.HTMLParser):
@@ -185,19 +211,47 @@ def test_page_references_only_files_that_exist_and_every_figure(report):
         assert f"{stem}.png" in references and f"{stem}.svg" in references
 
 
+def test_gallery_links_every_reconstruction_to_its_full_size_svg(report, report_inputs):
+    references = page_references(report)
+    for shape in ("circle", "rose"):
+        for algorithm in ("labeling", "optimal-transport"):
+            link = f"gallery/{shape}.{algorithm}.svg"
+            assert link in references
+            assert (report.parent / link).read_bytes() == \
+                (report_inputs / "reconstructions" / f"{shape}.{algorithm}.svg").read_bytes()
+    assert not any(reference.endswith((".crust.svg", ".nn-crust.svg")) for reference in references)
+    text = report.read_text()
+    assert '<td class="missing">no SVG</td>' in text and '<td class="missing">error</td>' in text
+
+
+def test_a_parameter_grid_is_shown_at_its_default_and_its_best_setting(report):
+    text = report.read_text()
+    assert "alpha-shape (default)" in text and "alpha-shape (alpha=0.5; best of 2)" in text  # noise
+    assert "alpha-shape (default, best of 2 settings)" in text  # outliers
+
+
+def test_results_with_a_grid_and_no_catalogue_are_a_one_line_error(report_inputs, tmp_path):
+    result = subprocess.run([sys.executable, "-m", "reports", "--out", tmp_path, "--results",
+                             report_inputs / "results.jsonl"], cwd=ROOT, capture_output=True, text=True, timeout=300)
+    assert result.returncode == 1
+    assert result.stderr.strip() == ("reports: the results hold 2 parameter settings of alpha-shape: give --catalogue "
+                                     "(curvebench list --json) so that the report knows its default")
+
+
 def test_page_has_a_caption_for_every_figure_and_the_summary(report):
     text = report.read_text()
     assert text.count("<figcaption>") == len(FIGURES)
     assert "Which method is best under which condition" in text
-    for condition in ["Clean smooth curves", "Several curves", "Sparse sampling", "Noise", "Outliers", "Medial axis",
-                      "Dominant points", "Speed, smooth curve", "Memory, noisy curve"]:
+    for condition in ["Several curves", "Sparse sampling", "Dense sampling", "Noise", "Outliers", "Sharp corners",
+                      "Medial axis", "Dominant points", "Speed, smooth curve", "Memory, noisy curve", "edge F1",
+                      "curve recall", "<tr class=\"agreement\">"]:
         assert condition in text, condition
     assert "Not drawn" not in text
     assert "1 timeout" in text and "1 crash" in text  # failed runs are reported, not hidden
 
 
 def test_same_files_give_the_same_bytes(report_inputs, report, tmp_path):
-    again = build(report_inputs, tmp_path, "results", "benchmark", "reconstructions")
+    again = build(report_inputs, tmp_path, "results", "benchmark", "reconstructions", "catalogue")
     for name in ["index.html"] + [f"{stem}.{ext}" for stem in FIGURES for ext in ("png", "svg")]:
         assert (again.parent / name).read_bytes() == (report.parent / name).read_bytes(), name
 

@@ -13,8 +13,9 @@ namespace {
 constexpr double kKeyMargin = 1e-12;
 
 struct Entry {
-  double key;  // diamond angle in (-2, 2], monotone in the exact angle; NaN if undefined
-  int index;   // into the neighbours, the list order that breaks ties
+  double key;    // diamond angle in (-2, 2], monotone in the exact angle; NaN if undefined
+  int index;     // into the neighbours, the list order that breaks ties
+  bool settled;  // key_settles(key)
 };
 
 // The sort state of one call, kept between calls so that growing neighbourhoods allocate
@@ -68,7 +69,7 @@ int sort_by_angle_about(Point2 center, Point2 site, std::span<const Point2> neig
     return scratch.theta[j];
   };
   auto less = [&](const Entry& a, const Entry& b) {
-    if (key_settles(a.key) && key_settles(b.key) && std::fabs(a.key - b.key) > kKeyMargin) return a.key < b.key;
+    if (a.settled && b.settled && std::fabs(a.key - b.key) > kKeyMargin) return a.key < b.key;
     const double ta = theta(a.index), tb = theta(b.index);
     return ta < tb || (ta == tb && a.index < b.index);
   };
@@ -81,7 +82,8 @@ int sort_by_angle_about(Point2 center, Point2 site, std::span<const Point2> neig
     if (j < 0 || j >= k || scratch.seen[j]) return;
     scratch.seen[j] = 1;
     const Point2 d = neighbors[j] - center;
-    entries.push_back({diamond_angle(cross(u, d), dot(u, d)), j});
+    const double key = diamond_angle(cross(u, d), dot(u, d));
+    entries.push_back({key, j, key_settles(key)});
   };
   for (int j : order) add(j);
   for (int j = 0; j < k; ++j) add(j);
@@ -107,8 +109,7 @@ int sort_by_angle_about(Point2 center, Point2 site, std::span<const Point2> neig
   int negative = 0;
   for (int j = 0; j < k; ++j) {
     order[j] = entries[j].index;
-    const double key = entries[j].key;
-    if (key_settles(key) ? key < 0 : theta(entries[j].index) < 0) negative = j + 1;
+    if (entries[j].settled ? entries[j].key < 0 : theta(entries[j].index) < 0) negative = j + 1;
   }
   return negative;
 }

@@ -294,8 +294,9 @@ class FitConnect {
   // Spec 2.1-2.2: circle through p and R_p, sides, and CONFORM / NONCONFORM.
   void refit(int i) {
     const int k = grown_[i];
-    fit_points_.assign(1, p_[i]);
-    for (int j = 0; j < k; ++j) fit_points_.push_back(p_[stream_[i][j]]);
+    fit_points_.resize(k + 1);
+    fit_points_[0] = p_[i];
+    for (int j = 0; j < k; ++j) fit_points_[j + 1] = p_[stream_[i][j]];
     const FittedCircle circle = hyper_circle_fit(fit_points_);
     out_.centers[i] = circle.center;
     out_.radii[i] = circle.radius;
@@ -314,9 +315,9 @@ class FitConnect {
       for (std::size_t j = previous_split; j < s.size(); ++j) order_.push_back(list_position_[s[j]]);
       const int negative =
           sort_by_angle_about(circle.center, p_[i], std::span<const Point2>(fit_points_).subspan(1), order_);
-      s.clear();
-      for (int j = negative - 1; j >= 0; --j) s.push_back(stream_[i][order_[j]]);
-      for (int j = negative; j < k; ++j) s.push_back(stream_[i][order_[j]]);
+      s.resize(k);
+      for (int j = 0; j < negative; ++j) s[negative - 1 - j] = stream_[i][order_[j]];
+      for (int j = negative; j < k; ++j) s[j] = stream_[i][order_[j]];
       split = negative;
     } else {
       // A non-finite centre (degenerate branch of the fit with z = 0) gives the authors NaN

@@ -107,9 +107,10 @@ def summary_lines(rows: list[SweepRow], suite: ScalingSuite | None) -> list[Summ
                                                 else r.metric("exact") == 1), True, "{:.0f}"))
     noisy = noise_rows(rows)
     if noisy:
-        strongest = max(r.noise for r in noisy)
-        lines.append(_mean_l2_line(f"Noise (strongest level, {strongest:g})",
-                                   [r for r in noisy if r.noise == strongest]))
+        for model in sorted({r.noise_model for r in noisy if r.noise > 0}):
+            strongest = max(r.noise for r in noisy if r.noise_model == model)
+            lines.append(_mean_l2_line(f"Noise ({model}, strongest level, {strongest:g})",
+                                       [r for r in noisy if r.noise_model == model and r.noise == strongest]))
     with_outliers = outlier_rows(rows)
     if with_outliers:
         most = max(r.outliers for r in with_outliers)

@@ -237,9 +237,15 @@ def _robustness_panel(ax, rows: list[SweepRow], setting, xlabel: str):
 def robustness_figure(rows: list[SweepRow], out_dir: pathlib.Path) -> SavedFigure | None:
     noisy, with_outliers = noise_rows(rows), outlier_rows(rows)
     scale_names = {"lfs": "local feature size", "diagonal": "bounding-box diagonal"}
-    panels = [([r for r in noisy if r.noise_scale == scale], lambda r: r.noise,
-               f"noise (standard deviation along the normal, x {scale_names.get(scale, scale)})", "Noise")
-              for scale in sorted({r.noise_scale for r in noisy})]
+    # One panel per noise model and scale: a Gaussian level (standard deviation) and a uniform
+    # one (half-width of the band) are different amounts of noise. Noise-free runs join each.
+    model_names = {"gaussian": "standard deviation along the normal",
+                   "uniform": "half-width of the uniform band along the normal"}
+    kinds = sorted({(r.noise_model, r.noise_scale) for r in noisy if r.noise > 0})
+    panels = [([r for r in noisy if r.noise_scale == scale and (r.noise == 0 or r.noise_model == model)],
+               lambda r: r.noise, f"noise ({model_names.get(model, model)}, x {scale_names.get(scale, scale)})",
+               "Noise" if len(kinds) == 1 else f"{model.capitalize()} noise")
+              for model, scale in kinds]
     if with_outliers:
         panels.append((with_outliers, lambda r: 100 * r.outliers, "outliers (% of the curve samples)", "Outliers"))
     if not panels:

@@ -21,7 +21,7 @@ SHARP_CORNER_FAMILIES = {"star", "square", "l-shape", "horned", "outline"}
 
 # `curvebench generate` defaults of the settings the report groups by.
 GENERATE_DEFAULTS = {"family": "random", "sampler": "epsilon", "epsilon": 0.2, "count": 200, "noise": 0.0,
-                     "noise_scale": "lfs", "outliers": 0.0, "seed": 1}
+                     "noise_scale": "lfs", "noise_model": "gaussian", "outliers": 0.0, "seed": 1}
 
 
 @dataclasses.dataclass
@@ -36,6 +36,7 @@ class SweepRow:
     count: int | None  # only for the uniform and random samplers
     noise: float
     noise_scale: str  # "lfs" or "diagonal"
+    noise_model: str  # "gaussian" (noise = standard deviation) or "uniform" (noise = half-width of the band)
     outliers: float  # outliers as a fraction of the curve samples
     seed: int
     status: str  # ok, error, timeout or crash
@@ -98,6 +99,7 @@ def row_from_json(row: dict) -> SweepRow:
         count=int(setting["count"]) if setting["sampler"] != "epsilon" else None,
         noise=float(setting["noise"]),
         noise_scale=str(setting["noise_scale"]),
+        noise_model=str(setting["noise_model"]),
         outliers=float(setting["outliers"]),
         seed=int(setting["seed"]),
         status=row["status"],

@@ -48,6 +48,8 @@ std::vector<Point2> blended_positions(std::span<const Point2> sites, const Fitte
     const std::span<const int> sides[2] = {fits.side(i, 0), fits.side(i, 1)};
     const int end0 = sides[0].empty() ? i : sides[0].back();
     const int end1 = sides[1].empty() ? i : sides[1].back();
+    // The arc's angles depend on i only: computed once, not once per neighbour.
+    const double arc_degrees[3] = {degrees(sites[end0] - c), degrees(sites[end1] - c), degrees(sites[i] - c)};
     for (const std::span<const int> side : sides) {
       for (int k : side) {
         if (touches_sharp(k)) continue;
@@ -60,8 +62,8 @@ std::vector<Point2> blended_positions(std::span<const Point2> sites, const Fitte
         const double root = std::sqrt(det);
         const Point2 hit[2] = {{c.x + (a * offset + b * root) / d2, c.y + (b * offset - a * root) / d2},
                                {c.x + (a * offset - b * root) / d2, c.y + (b * offset + a * root) / d2}};
-        double deg[6] = {degrees(sites[end0] - c), degrees(sites[end1] - c), degrees(sites[i] - c),
-                         degrees(sites[k] - c),    degrees(hit[0] - c),     degrees(hit[1] - c)};
+        double deg[6] = {arc_degrees[0],        arc_degrees[1],      arc_degrees[2],
+                         degrees(sites[k] - c), degrees(hit[0] - c), degrees(hit[1] - c)};
         // Orient the arc positively, then measure every angle from its start.
         if (std::fmod(deg[2] + 360.0 - deg[0], 360.0) > std::fmod(deg[1] + 360.0 - deg[0], 360.0))
           std::swap(deg[0], deg[1]);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/nearest_neighbors.h"
+#include "fitconnect/angular_order.h"
 #include "fitconnect/hyper_circle_fit.h"
 
 namespace curvebench {
@@ -80,6 +81,11 @@ class Marks {
 
 Point2 unit(Point2 v) { return (1.0 / norm(v)) * v; }
 
+double squared_distance(Point2 a, Point2 b) {
+  const Point2 d = a - b;
+  return d.x * d.x + d.y * d.y;
+}
+
 // Closed segments ab and cd meet; parallel (or degenerate) pairs count as meeting, as in the
 // authors' corner test (spec 2.6 step 5).
 bool segments_meet(Point2 a, Point2 b, Point2 c, Point2 d) {
@@ -121,12 +127,14 @@ class FitConnect {
         nn_(sites),
         stream_(n_),
         grown_(n_, 0),
+        reach_(n_, -1.0),
         refs_(n_),
         out_(unfitted(n_, State::Initial)),
         open_(n_),
         side_marks_(n_),
         chain_marks_(n_),
-        other_marks_(n_) {
+        other_marks_(n_),
+        list_position_(n_) {
     for (int i = 0; i < n_; ++i) open_.insert(i);
   }
 
@@ -150,6 +158,8 @@ class FitConnect {
   int link_count(int i) const { return (link_[i][0] != kNone) + (link_[i][1] != kNone); }
   std::span<const int> side(int i, int t) const { return out_.side(i, t); }
   bool in_side(int i, int t, int q) const {
+    // A point farther than the farthest of R_i is in neither side: a cheap exact test first.
+    if (q < 0 || squared_distance(p_[i], p_[q]) > reach_[i]) return false;
     const auto s = side(i, t);
     return std::find(s.begin(), s.end(), q) != s.end();
   }
@@ -274,6 +284,9 @@ class FitConnect {
     if (static_cast<int>(stream.size()) < wanted) return false;
     for (int k = grown_[i]; k < wanted; ++k) refs_[stream[k]].push_back(i);
     grown_[i] = wanted;
+    // The list is ordered by this same squared distance (nearest_neighbors.h); the margin
+    // only guards against a compiler evaluating it differently in the two places.
+    reach_[i] = squared_distance(p_[i], p_[stream[wanted - 1]]) * (1 + 1e-9);
     refit(i);
     return true;
   }
@@ -281,8 +294,9 @@ class FitConnect {
   // Spec 2.1-2.2: circle through p and R_p, sides, and CONFORM / NONCONFORM.
   void refit(int i) {
     const int k = grown_[i];
-    fit_points_.assign(1, p_[i]);
-    for (int j = 0; j < k; ++j) fit_points_.push_back(p_[stream_[i][j]]);
+    fit_points_.resize(k + 1);
+    fit_points_[0] = p_[i];
+    for (int j = 0; j < k; ++j) fit_points_[j + 1] = p_[stream_[i][j]];
     const FittedCircle circle = hyper_circle_fit(fit_points_);
     out_.centers[i] = circle.center;
     out_.radii[i] = circle.radius;
@@ -290,30 +304,25 @@ class FitConnect {
 
     std::vector<int>& s = out_.neighborhoods[i];
     int& split = out_.side0_sizes[i];
-    s.clear();
     if (std::isfinite(circle.center.x) && std::isfinite(circle.center.y)) {
       // Stable sort of (p, R_p) by angle about the centre relative to p; p has angle 0 and
       // comes first in the list, so A^0 is exactly the negative angles (reversed) and A^1 the
-      // rest.
-      const double own = std::atan2(p_[i].y - circle.center.y, p_[i].x - circle.center.x);
-      angles_.clear();
-      for (int j = 0; j < k; ++j) {
-        const Point2 d = p_[stream_[i][j]] - circle.center;
-        double theta = std::atan2(d.y, d.x) - own;
-        if (theta < -std::numbers::pi) theta += 2 * std::numbers::pi;
-        else if (theta > std::numbers::pi) theta -= 2 * std::numbers::pi;
-        angles_.push_back({theta, stream_[i][j]});
-      }
-      std::stable_sort(angles_.begin(), angles_.end(),
-                       [](const auto& a, const auto& b) { return a.first < b.first; });
-      int negative = 0;
-      while (negative < k && angles_[negative].first < 0.0) ++negative;
-      for (int j = negative - 1; j >= 0; --j) s.push_back(angles_[j].second);
-      for (int j = negative; j < k; ++j) s.push_back(angles_[j].second);
+      // rest. The previous fit's order (A^0 reversed, then A^1) is the guess to start from.
+      for (int j = 0; j < k; ++j) list_position_[stream_[i][j]] = j;
+      order_.clear();
+      const int previous_split = split;
+      for (int j = previous_split - 1; j >= 0; --j) order_.push_back(list_position_[s[j]]);
+      for (std::size_t j = previous_split; j < s.size(); ++j) order_.push_back(list_position_[s[j]]);
+      const int negative =
+          sort_by_angle_about(circle.center, p_[i], std::span<const Point2>(fit_points_).subspan(1), order_);
+      s.resize(k);
+      for (int j = 0; j < negative; ++j) s[negative - 1 - j] = stream_[i][order_[j]];
+      for (int j = negative; j < k; ++j) s[j] = stream_[i][order_[j]];
       split = negative;
     } else {
       // A non-finite centre (degenerate branch of the fit with z = 0) gives the authors NaN
       // angles, which their ordered map keeps in list order after p: A^0 empty.
+      s.clear();
       for (int j = 0; j < k; ++j) s.push_back(stream_[i][j]);
       split = 0;
     }
@@ -380,6 +389,7 @@ class FitConnect {
   NearestNeighbors nn_;
   std::vector<std::vector<int>> stream_;  // nearest neighbours of each point, self excluded
   std::vector<int> grown_;                // |R_i|: R_i is the prefix of stream_[i]
+  std::vector<double> reach_;             // squared distance to the farthest of R_i, a little more
   std::vector<std::vector<int>> refs_;    // Ref(q) = {i : q in R_i}
   FittedNeighborhoods out_;               // states, links, fits and sides as the spec names them
   std::vector<State>& state_ = out_.states;
@@ -389,7 +399,8 @@ class FitConnect {
   Marks side_marks_, chain_marks_, other_marks_;
   std::vector<int> knn_buffer_, scratch_, saved_neighborhood_;
   std::vector<Point2> fit_points_;
-  std::vector<std::pair<double, int>> angles_;
+  std::vector<int> list_position_;  // of a neighbour in the list of the site being refitted
+  std::vector<int> order_;          // list positions sorted by angle
 };
 
 void FitConnect::visit(int p) {

@@ -2,11 +2,13 @@
 // on small hand-made inputs, fixed seeds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
 #include <vector>
 
+#include "fitconnect/angular_order.h"
 #include "fitconnect/fitconnect.h"
 #include "fitconnect/fitted_neighborhoods.h"
 #include "fitconnect/hyper_circle_fit.h"
@@ -320,6 +322,123 @@ TEST(FitConnect, BlendMovesNoisyEllipseSamplesTowardsTheEllipse) {
     }
     EXPECT_LT(after, 0.8 * before) << "noise " << noise;
   }
+}
+
+
+// The order of spec 2.2 computed the straightforward way, as the authors do (atan2 of every
+// neighbour about the centre relative to the site, wrapped once, stable sort of the list):
+// the fast path (angular_order.h) must give exactly this.
+struct StraightforwardSides {
+  std::vector<int> order;  // indices into the neighbours, ascending angle
+  int negative = 0;
+};
+StraightforwardSides straightforward_sides(Point2 center, Point2 site, const std::vector<Point2>& neighbors) {
+  const double own = std::atan2(site.y - center.y, site.x - center.x);
+  std::vector<std::pair<double, int>> angles;
+  for (int j = 0; j < static_cast<int>(neighbors.size()); ++j) {
+    double theta = std::atan2(neighbors[j].y - center.y, neighbors[j].x - center.x) - own;
+    if (theta < -std::numbers::pi) theta += 2 * std::numbers::pi;
+    else if (theta > std::numbers::pi) theta -= 2 * std::numbers::pi;
+    angles.push_back({theta, j});
+  }
+  std::stable_sort(angles.begin(), angles.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  StraightforwardSides sides;
+  for (const auto& [theta, j] : angles) {
+    sides.order.push_back(j);
+    if (theta < 0) ++sides.negative;
+  }
+  return sides;
+}
+
+TEST(FitConnect, AngularOrderEqualsTheStraightforwardSortOnRandomAndTiedNeighbourhoods) {
+  std::mt19937 rng(41);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::uniform_int_distribution<int> size(1, 60);
+  int ties_seen = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const Point2 center{unit(rng), unit(rng)};
+    const double scale = std::pow(10.0, 3 * unit(rng));  // 1e-3 .. 1e3
+    const Point2 site = center + scale * Point2{unit(rng), unit(rng)};
+    const int k = size(rng);
+    std::vector<Point2> neighbors;
+    for (int j = 0; j < k; ++j) {
+      const int kind = trial % 7 == 0 ? j % 6 : 0;  // some neighbourhoods full of exact and near ties
+      const Point2 u = site - center;
+      Point2 q;
+      switch (kind) {
+        case 1: q = center + (1.0 + j) * u; break;                               // on the site's ray: theta = 0
+        case 2: q = center - (0.5 + j) * u; break;                               // opposite: theta = +-pi
+        case 3: q = neighbors.empty() ? site : center + 2.0 * (neighbors.back() - center); break;  // same ray as the last
+        case 4: q = center; break;                                               // at the centre
+        case 5: q = center + Point2{u.y, -u.x}; break;                           // theta = -pi/2, repeated
+        default: q = center + scale * Point2{unit(rng), unit(rng)};
+      }
+      if (kind != 0) ++ties_seen;
+      neighbors.push_back(q);
+    }
+    const StraightforwardSides expected = straightforward_sides(center, site, neighbors);
+    // Guesses: none, the answer, its reverse, a shuffle, a partial list with a bogus entry.
+    std::vector<std::vector<int>> guesses(5);
+    guesses[1] = expected.order;
+    guesses[2].assign(expected.order.rbegin(), expected.order.rend());
+    guesses[3] = expected.order;
+    std::shuffle(guesses[3].begin(), guesses[3].end(), rng);
+    guesses[4].assign(expected.order.begin(), expected.order.begin() + k / 2);
+    guesses[4].push_back(k + 3);
+    for (std::vector<int>& order : guesses) {
+      const int negative = sort_by_angle_about(center, site, neighbors, order);
+      ASSERT_EQ(order, expected.order) << "trial " << trial;
+      ASSERT_EQ(negative, expected.negative) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(ties_seen, 1000);
+}
+
+// Every stored neighbourhood of a finished run, re-sorted the straightforward way about its
+// stored centre, gives its stored sides: the fast ordering changed nothing, growth step by
+// growth step, on noisy closed curves, open arcs, corners and close pairs.
+TEST(FitConnect, StoredSidesEqualTheStraightforwardSortOnManyInputs) {
+  std::vector<std::vector<Point2>> inputs;
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    inputs.push_back(jittered(testing::uniform_circle(150), 0.01 * seed, seed));
+    inputs.push_back(jittered(testing::random_arc(120, 1.5 * std::numbers::pi, seed), 0.004 * (seed - 1), seed));
+    inputs.push_back(jittered(testing::sample_polygon_evenly(testing::star_polygon(0.45), 200), 0.002 * seed, seed));
+    inputs.push_back(circle_with_close_pair(40, static_cast<int>(seed) * 6));
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> angle(0, 2 * std::numbers::pi);
+    std::vector<Point2> random_angles;
+    for (int i = 0; i < 200; ++i) {
+      const double t = angle(rng);
+      random_angles.push_back({std::cos(t), std::sin(t)});
+    }
+    inputs.push_back(random_angles);
+  }
+  int checked = 0;
+  for (std::size_t input = 0; input < inputs.size(); ++input) {
+    const std::vector<Point2>& points = inputs[input];
+    const FittedNeighborhoods fits = connect_fitted_neighborhoods(points, 0);
+    for (int i = 0; i < static_cast<int>(points.size()); ++i) {
+      const std::vector<int>& stored = fits.neighborhoods[i];
+      if (stored.empty() || !std::isfinite(fits.centers[i].x) || !std::isfinite(fits.centers[i].y)) continue;
+      // The stored sets are prefixes of the neighbour list, ordered by squared distance, ties
+      // by index (nearest_neighbors.h).
+      auto squared = [&](int q) { return dot(points[q] - points[i], points[q] - points[i]); };
+      std::vector<int> list = stored;
+      std::sort(list.begin(), list.end(), [&](int a, int b) {
+        return squared(a) < squared(b) || (squared(a) == squared(b) && a < b);
+      });
+      std::vector<Point2> neighbors;
+      for (int q : list) neighbors.push_back(points[q]);
+      const StraightforwardSides expected = straightforward_sides(fits.centers[i], points[i], neighbors);
+      std::vector<int> sides;
+      for (int j = expected.negative - 1; j >= 0; --j) sides.push_back(list[expected.order[j]]);
+      for (std::size_t j = expected.negative; j < expected.order.size(); ++j) sides.push_back(list[expected.order[j]]);
+      ASSERT_EQ(sides, stored) << "input " << input << " site " << i;
+      ASSERT_EQ(fits.side0_sizes[i], expected.negative) << "input " << input << " site " << i;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 3000);
 }
 
 }  // namespace

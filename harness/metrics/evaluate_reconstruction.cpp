@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "metrics/curve_recall.h"
 #include "metrics/hausdorff_distance.h"
 #include "metrics/l2_error.h"
 #include "metrics/segments.h"
@@ -62,6 +63,7 @@ ReconstructionMetrics evaluate_reconstruction(const GroundTruth& truth, std::spa
     require_finite(curve, "the reconstructed curve");
     metrics.l2_error = open_truth ? std::numeric_limits<double>::quiet_NaN() : l2_error(true_curves, curve);
     metrics.hausdorff = hausdorff_distance(true_curves, curve, hausdorff_tolerance) / diagonal;
+    metrics.curve_recall = curve_recall(true_curves, curve, kCurveRecallToleranceOverDiagonal * diagonal);
     metrics.topology = curve_topology(edges);
     std::vector<char> on_curve(view->vertices.size(), 0);
     for (const Edge& e : edges) on_curve[e[0]] = on_curve[e[1]] = 1;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "labeling/dominant_points.h"
+#include "voronoi/circumcenters_in_region.h"
 #include "voronoi/voronoi_subgraph.h"
 
 namespace curvebench {
@@ -41,7 +42,10 @@ CurveAndDominantPoints extract_curve_and_dominant_points(const DelaunayVoronoi& 
 }
 
 MedialAxis extract_interior_medial_axis(const DelaunayVoronoi& dv, const VoronoiLabels& labels) {
-  return voronoi_subgraph(dv, labels.inner, [](int, int) { return true; });
+  // Gap 8 (README.md): an inner vertex whose position lies outside the inner triangles (a flat
+  // triangle's far circumcentre, or one beyond the hull that no walk reached) is no part of
+  // the interior medial axis.
+  return voronoi_subgraph(dv, circumcenters_in_region(dv, labels.inner), [](int, int) { return true; });
 }
 
 SiteResult shapes_from_labels(const DelaunayVoronoi& dv, const VoronoiLabels& labels) {

@@ -15,8 +15,8 @@
 // it does not depend on the order of a walk, as parity along a breadth-first walk would.
 //
 // A triangle in the region need not have its Voronoi vertex there: a flat triangle of three
-// samples on a straight stroke has its circumcentre across the shape, up to 10^12 away
-// (glyph outlines). Gold's anti-crust is the skeleton of the crust's region, so such a vertex
+// samples on a straight stroke has its circumcentre across the shape, far outside it (glyph
+// outlines, README.md). Gold's anti-crust is the skeleton of the crust's region, so such a vertex
 // is no part of the interior skeleton and is left out (voronoi/circumcenters_in_region.h).
 #pragma once
 

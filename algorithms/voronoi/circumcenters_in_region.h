@@ -7,7 +7,7 @@
 //
 // A triangle inside a curve can have its circumcentre far outside it: three nearly
 // collinear samples on a straight stroke make a flat triangle whose circumcentre lies across
-// the shape, up to 10^12 away. A medial axis must not keep such a vertex.
+// the shape, far outside it. A medial axis must not keep such a vertex.
 //
 // The circumcentre is located by a remembering stochastic visibility walk from its own
 // triangle (Devillers, Pion, Teillaud, "Walking in a triangulation", IJFCS 13(2), 2002):

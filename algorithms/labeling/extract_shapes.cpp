@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "labeling/dominant_points.h"
-#include "voronoi/circumcenters_in_region.h"
 #include "voronoi/voronoi_subgraph.h"
 
 namespace curvebench {
@@ -42,10 +41,15 @@ CurveAndDominantPoints extract_curve_and_dominant_points(const DelaunayVoronoi& 
 }
 
 MedialAxis extract_interior_medial_axis(const DelaunayVoronoi& dv, const VoronoiLabels& labels) {
-  // Gap 8 (README.md): an inner vertex whose position lies outside the inner triangles (a flat
-  // triangle's far circumcentre, or one beyond the hull that no walk reached) is no part of
-  // the interior medial axis.
-  return voronoi_subgraph(dv, circumcenters_in_region(dv, labels.inner), [](int, int) { return true; });
+  // Gap 8 (README.md): an inner vertex beyond the convex hull (one no walk reached, inner by
+  // gap 3) lies outside every polygon on the samples, so it is no part of an interior medial
+  // axis. The hull test gallops from the last query (in_convex_hull).
+  std::vector<std::uint8_t> kept(labels.inner.begin(), labels.inner.end());
+  int hull_wedge = 0;
+  for (int t = 0; t < dv.triangle_count(); ++t) {
+    if (kept[t]) kept[t] = in_convex_hull(dv, dv.circumcenters[t], hull_wedge);
+  }
+  return voronoi_subgraph(dv, kept, [](int, int) { return true; });
 }
 
 SiteResult shapes_from_labels(const DelaunayVoronoi& dv, const VoronoiLabels& labels) {

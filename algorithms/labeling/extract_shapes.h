@@ -6,8 +6,8 @@
 //      an outer vertex (a hull edge's dual joins its triangle to the infinite, outer vertex);
 //      dominant points (site indices, ascending) = the sites of the label patterns that pass
 //      the filter of dominant_points.h, found in the same pass over the label changes;
-//      medial axis = the inner Voronoi vertices that lie in the region of the inner triangles,
-//      with their radii, and the Voronoi edges joining two of them. Coinciding vertices (co-circular sites, joined by zero-length
+//      medial axis = the inner Voronoi vertices inside the convex hull of the sites, with
+//      their radii, and the Voronoi edges joining two of them. Coinciding vertices (co-circular sites, joined by zero-length
 //      Voronoi edges) are merged into one medial-axis vertex.
 #pragma once
 

@@ -3,7 +3,6 @@
 #include <numeric>
 #include <utility>
 
-#include "voronoi/circumcenters_in_region.h"
 #include "voronoi/voronoi_subgraph.h"
 
 namespace curvebench {
@@ -70,7 +69,8 @@ std::vector<std::uint8_t> even_odd_region(const DelaunayVoronoi& dv, const OneSt
 }  // namespace
 
 MedialAxis anti_crust_medial_axis(const DelaunayVoronoi& dv, const OneStepCrust& crust) {
-  const std::vector<std::uint8_t> kept = circumcenters_in_region(dv, even_odd_region(dv, crust));
+  // Every vertex kept lies in the region itself (header): no point location is needed.
+  const std::vector<std::uint8_t> kept = even_odd_region(dv, crust);
   // Anti-crust edges are the Voronoi edges whose dual Delaunay edge is not crust.
   return voronoi_subgraph(dv, kept, [&](int t, int k) { return !crust.is_crust[t][k]; });
 }

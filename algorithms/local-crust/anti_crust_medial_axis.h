@@ -14,10 +14,18 @@
 // crosses is odd. On closed crusts this is the classical parity fill; on a crust with a gap
 // it does not depend on the order of a walk, as parity along a breadth-first walk would.
 //
-// A triangle in the region need not have its Voronoi vertex there: a flat triangle of three
-// samples on a straight stroke has its circumcentre across the shape, far outside it (glyph
-// outlines, README.md). Gold's anti-crust is the skeleton of the crust's region, so such a vertex
-// is no part of the interior skeleton and is left out (voronoi/circumcenters_in_region.h).
+// Each kept Voronoi vertex lies in the region, though the triangle it belongs to may be flat
+// (three samples on a straight stroke of a glyph): the circumcentres of a face lie in that
+// face. A crust edge pq has both opposite angles acute (their sum is below 90 degrees), so
+// its diametral disk lies in the two empty circumdisks: pq is a Gabriel edge, and every
+// point of it is nearer to p or q than to any other sample. So no Voronoi edge crosses a
+// crust edge except its dual. The Voronoi vertices of one face are joined by anti-crust
+// edges (duals of its non-crust edges), so they lie in one face of the crust; and a face
+// inside has a crust edge on its boundary, whose acute opposite angle puts the inner
+// triangle's circumcentre on the face's side, joined to the edge's midpoint by a piece of
+// the dual Voronoi edge: that face is the face itself. (The walk-dependent parity used
+// before marked triangles of the outer face inside when the crust had a gap, and kept their
+// far circumcentres: README.md.)
 #pragma once
 
 #include "core/reconstruction.h"

@@ -11,8 +11,8 @@
 //      those intervals. Reconstructed segments near a true one come from a uniform grid
 //      (segment_grid.h), so the cost grows with the segments that are actually near.
 // Unlike L2, which counts a region and so loses all of it to one gap, and Hausdorff, which
-// reports the worst place only, a gap of length g costs g - 2 tolerance of length and
-// nothing more. Throws std::invalid_argument if the tolerance is not positive, a coordinate
+// reports the worst place only, a gap of length g costs about g - 2 tolerance of length
+// (exactly that where the edges beside it are in line with it) and nothing more. Throws std::invalid_argument if the tolerance is not positive, a coordinate
 // is not finite or the true curves have no length.
 #pragma once
 

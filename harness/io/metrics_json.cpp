@@ -21,6 +21,7 @@ nlohmann::ordered_json metrics_to_json(const ReconstructionMetrics& metrics) {
   if (metrics.l2_error) json["l2_error"] = number_or_null(*metrics.l2_error);
   if (metrics.hausdorff) json["hausdorff"] = number_or_null(*metrics.hausdorff);
   if (metrics.curve_recall) json["curve_recall"] = *metrics.curve_recall;
+  if (metrics.curve_recall_tolerance) json["curve_recall_tolerance"] = *metrics.curve_recall_tolerance;
   if (metrics.vertex_distance) {
     json["vertex_distance_mean"] = metrics.vertex_distance->mean;
     json["vertex_distance_max"] = metrics.vertex_distance->max;

@@ -4,7 +4,8 @@
 // a curve on vertices of its own, whose edges join no samples) is null.
 //
 // {"true_curves": 1,
-//  "l2_error": 0.006, "hausdorff": 0.01, "curve_recall": 1.0, "manifold": true, "components": 1,
+//  "l2_error": 0.006, "hausdorff": 0.01, "curve_recall": 1.0,
+//  "curve_recall_tolerance": 0.01, "manifold": true, "components": 1,
 //  "closed_components": 1, "dangling_vertices": 0, "branching_vertices": 0,
 //  "exact": true, "edge_precision": 1.0, "edge_recall": 1.0, "edge_f1": 1.0,  // null unless on samples
 //  "medial_axis_hausdorff": 0.02,

@@ -62,6 +62,7 @@ TEST(EvaluateReconstruction, AMissingEdgeLeavesAnOpenCurveWithNoArea) {
   EXPECT_NEAR(*m.hausdorff, 0.25 / std::sqrt(2.0), 1e-4);
   // The gap, 0.5 long, is covered within the tolerance (0.01 of the diagonal) of its two ends.
   const double tolerance = kCurveRecallToleranceOverDiagonal * std::sqrt(2.0);
+  EXPECT_DOUBLE_EQ(*m.curve_recall_tolerance, kCurveRecallToleranceOverDiagonal);  // the samples lie on the square
   EXPECT_NEAR(*m.curve_recall, (3.5 + 2 * tolerance) / 4.0, 1e-12);
   EXPECT_FALSE(m.topology->manifold);
   EXPECT_EQ(m.topology->dangling_vertices, 2);
@@ -103,6 +104,19 @@ TEST(OracleL2Error, MeasuresTheSamplingItself) {
   GroundTruth truth = unit_square_truth();
   truth.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 5}, {5, 6}, {6, 7}, {0, 7}};
   EXPECT_DOUBLE_EQ(oracle_l2_error(truth, kSamples), 0.125);
+}
+
+TEST(EvaluateReconstruction, CurveRecallToleratesWhatTheSamplingItselfForces) {
+  // Samples that skip the corner (1, 1): the true adjacency cuts it off, and the corner is
+  // 0.5 / sqrt(2) from that chord, so the tolerance grows to it and the true adjacency
+  // still recalls the whole curve.
+  GroundTruth truth = unit_square_truth();
+  truth.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 5}, {5, 6}, {6, 7}, {0, 7}};
+  Reconstruction true_order;
+  true_order.curve_edges = truth.edges;
+  const ReconstructionMetrics m = evaluate_reconstruction(truth, kSamples, true_order);
+  EXPECT_NEAR(*m.curve_recall_tolerance, 0.5 / std::sqrt(2.0) / std::sqrt(2.0), 2e-4);
+  EXPECT_DOUBLE_EQ(*m.curve_recall, 1.0);
 }
 
 TEST(EvaluateReconstruction, MismatchedPointsAreRejected) {

@@ -22,6 +22,8 @@ EdgeAgreement edge_agreement(std::span<const Edge> reconstructed, std::span<cons
   for (const Edge& e : found) agreement.correct_edges += expected.contains(e) ? 1 : 0;
   if (!found.empty()) agreement.precision = static_cast<double>(agreement.correct_edges) / agreement.reconstructed_edges;
   if (!expected.empty()) agreement.recall = static_cast<double>(agreement.correct_edges) / agreement.true_edges;
+  const double sum = agreement.precision + agreement.recall;
+  if (sum > 0.0) agreement.f1 = 2.0 * agreement.precision * agreement.recall / sum;
   agreement.exact = found == expected;
   return agreement;
 }

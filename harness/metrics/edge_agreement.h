@@ -4,8 +4,8 @@
 //      edge and duplicates do not matter).
 // Out: the number of reconstructed edges that are true; precision, that number over the
 //      reconstructed edges (0 for an empty reconstruction, which finds nothing); recall,
-//      that number over the true edges (1 when there are none); exactness, whether the two
-//      edge sets are equal.
+//      that number over the true edges (1 when there are none); F1, their harmonic mean
+//      2 P R / (P + R) (0 when both are 0); exactness, whether the two edge sets are equal.
 #pragma once
 
 #include <span>
@@ -20,6 +20,7 @@ struct EdgeAgreement {
   int correct_edges = 0;
   double precision = 0.0;
   double recall = 1.0;
+  double f1 = 0.0;
   bool exact = false;
 };
 

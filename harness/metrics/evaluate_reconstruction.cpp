@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "metrics/curve_recall.h"
 #include "metrics/hausdorff_distance.h"
 #include "metrics/l2_error.h"
 #include "metrics/segments.h"
@@ -55,6 +56,12 @@ ReconstructionMetrics evaluate_reconstruction(const GroundTruth& truth, std::spa
   ReconstructionMetrics metrics;
   metrics.true_curves = static_cast<int>(truth.curves.size());
   const bool open_truth = has_open_curve(truth.curves);
+  auto sampling_deviation = [&] {
+    const std::vector<Segment2> true_order = edge_segments(points, truth.edges);
+    // Plus the margin below the exact value that the distance may have, so that the true
+    // adjacency always scores 1.
+    return true_order.empty() ? 0.0 : hausdorff_distance(true_curves, true_order, hausdorff_tolerance) + hausdorff_tolerance;
+  };
 
   if (const auto view = curve_view(reconstruction, points)) {
     const std::vector<Edge> edges(view->edges.begin(), view->edges.end());
@@ -62,6 +69,9 @@ ReconstructionMetrics evaluate_reconstruction(const GroundTruth& truth, std::spa
     require_finite(curve, "the reconstructed curve");
     metrics.l2_error = open_truth ? std::numeric_limits<double>::quiet_NaN() : l2_error(true_curves, curve);
     metrics.hausdorff = hausdorff_distance(true_curves, curve, hausdorff_tolerance) / diagonal;
+    const double tolerance = std::max(kCurveRecallToleranceOverDiagonal * diagonal, sampling_deviation());
+    metrics.curve_recall = curve_recall(true_curves, curve, tolerance);
+    metrics.curve_recall_tolerance = tolerance / diagonal;
     metrics.topology = curve_topology(edges);
     std::vector<char> on_curve(view->vertices.size(), 0);
     for (const Edge& e : edges) on_curve[e[0]] = on_curve[e[1]] = 1;

@@ -10,14 +10,18 @@
 //                                  edges, over the true curves' bounding-box diagonal, exact to
 //                                  10^-4 of the diagonal (hausdorff_distance.h); infinite when
 //                                  the reconstruction has no edge
+//                  curve_recall    share of the true curves' length within a tolerance of the
+//                                  edges (curve_recall.h; the tolerance below), and that
+//                                  tolerance over the diagonal
 //                  topology        manifold, components, closed components (curve_topology.h),
 //                                  compared with true_curves
 //                  vertex_distance mean and largest distance from the curve's vertices (the
 //                                  ends of its edges, where a denoising method moved them) to
 //                                  the true curves, over the diagonal (distance_to_curve.h)
-//                  edges           precision, recall, exactness against the true adjacency
-//                                  (edge_agreement.h); only for interpolating reconstructions,
-//                                  whose edges join input points
+//                  edges           precision, recall, F1, exactness against the true adjacency
+//                                  (edge_agreement.h); only when the edges join input points
+//                                  (interpolating and denoising methods), absent for a curve
+//                                  on vertices of its own (metrics_json writes null then)
 //   medial axis    medial_axis_hausdorff  Hausdorff distance between the true and the
 //                                  reconstructed interior medial axes (isolated vertices count
 //                                  as points), over the same diagonal; infinite if either is
@@ -40,10 +44,21 @@
 
 namespace curvebench {
 
+// curve_recall's tolerance: the larger of this fraction of the diagonal of the true curves'
+// bounding box (the scale of hausdorff, defined on every input: local feature size vanishes
+// at the corners of polygons and outlines) and the Hausdorff distance between the true
+// curves and the samples joined in true order (what the sampling itself forces on any
+// interpolating reconstruction: the sagitta of the chords of a sparse sample, the noise of a
+// noisy one; plus the 10^-4 of the diagonal it may fall short by), so that the true
+// adjacency always scores 1.
+inline constexpr double kCurveRecallToleranceOverDiagonal = 0.01;
+
 struct ReconstructionMetrics {
   int true_curves = 0;
   std::optional<double> l2_error;  // NaN when a true curve is open
   std::optional<double> hausdorff;  // over the diagonal; may be infinite
+  std::optional<double> curve_recall;  // share of the true length within the tolerance below
+  std::optional<double> curve_recall_tolerance;  // over the diagonal
   std::optional<DistanceToCurve> vertex_distance;  // over the diagonal
   std::optional<CurveTopology> topology;
   std::optional<EdgeAgreement> edges;

@@ -1,5 +1,7 @@
 #include "sweep/sweep_plan.h"
 
+#include <map>
+#include <set>
 #include <stdexcept>
 
 #include "io/parameters_json.h"
@@ -51,14 +53,14 @@ const Algorithm& algorithm_named(std::span<const Algorithm* const> algorithms, c
   fail("unknown algorithm '" + name + "'");
 }
 
-// (algorithm, resolved parameters) pairs in the order the configuration lists them.
-std::vector<std::pair<std::string, Json>> algorithm_settings(const Json& config, std::span<const Algorithm* const> algorithms) {
-  Json entries = config.contains("algorithms") ? config.at("algorithms") : Json("all");
+// (algorithm, resolved parameters) pairs in the order `entries` lists them ("all" or a list).
+std::vector<std::pair<std::string, Json>> algorithm_settings(Json entries, const std::string& where,
+                                                             std::span<const Algorithm* const> algorithms) {
   if (entries == "all") {
     entries = Json::array();
     for (const Algorithm* algorithm : algorithms) entries.push_back(algorithm->name());
   }
-  if (!entries.is_array() || entries.empty()) fail("\"algorithms\" must be \"all\" or a non-empty list");
+  if (!entries.is_array() || entries.empty()) fail(where + " must be \"all\" or a non-empty list");
   std::vector<std::pair<std::string, Json>> settings;
   for (const Json& entry : entries) {
     const Json object = entry.is_string() ? Json{{"name", entry}} : entry;
@@ -99,17 +101,31 @@ SweepPlan plan_sweep(const nlohmann::ordered_json& config, std::span<const Algor
   if (!config.contains("inputs") || !config.at("inputs").is_array() || config.at("inputs").empty()) {
     fail("\"inputs\" must be a non-empty list of generator settings");
   }
-  const auto settings = algorithm_settings(config, algorithms);
+  const auto top_level = algorithm_settings(config.contains("algorithms") ? config.at("algorithms") : Json("all"),
+                                            "\"algorithms\"", algorithms);
+  // An input, or a run, that several grids produce is planned once, where it first appears.
+  std::map<std::string, int> input_index;
+  std::set<std::string> planned;
   for (size_t g = 0; g < config.at("inputs").size(); ++g) {
-    const Json& grid = config.at("inputs")[g];
-    if (grid.is_object() && grid.contains("seed")) fail("inputs[" + std::to_string(g) + "] sets \"seed\"; use the top-level \"seeds\"");
-    for (const Json& input : expand_grid(grid, "inputs[" + std::to_string(g) + "]")) {
+    const std::string where = "inputs[" + std::to_string(g) + "]";
+    Json grid = config.at("inputs")[g];
+    if (grid.is_object() && grid.contains("seed")) fail(where + " sets \"seed\"; use the top-level \"seeds\"");
+    std::vector<std::pair<std::string, Json>> own;
+    if (grid.is_object() && grid.contains("algorithms")) {
+      own = algorithm_settings(grid.at("algorithms"), where + ".algorithms", algorithms);
+      grid.erase("algorithms");
+    }
+    const auto& settings = own.empty() ? top_level : own;
+    for (const Json& input : expand_grid(grid, where)) {
       for (const Json& seed : seeds) {
         Json seeded = input;
         seeded["seed"] = seed;
-        plan.inputs.push_back(std::move(seeded));
+        const std::string key = nlohmann::json(seeded).dump();  // keys sorted: the order written does not matter
+        auto [found, added] = input_index.emplace(key, static_cast<int>(plan.inputs.size()));
+        if (added) plan.inputs.push_back(std::move(seeded));
         for (const auto& [algorithm, parameters] : settings) {
-          plan.runs.push_back({static_cast<int>(plan.inputs.size()) - 1, algorithm, parameters});
+          if (!planned.insert(key + "\n" + algorithm + "\n" + parameters.dump()).second) continue;
+          plan.runs.push_back({found->second, algorithm, parameters});
         }
       }
     }

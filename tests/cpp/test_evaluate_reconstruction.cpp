@@ -42,6 +42,7 @@ TEST(EvaluateReconstruction, TheTrueAdjacencyScoresPerfectly) {
   EXPECT_DOUBLE_EQ(oracle_l2_error(unit_square_truth(), kSamples), 0.0);
   EXPECT_DOUBLE_EQ(*m.l2_error, 0.0);
   EXPECT_DOUBLE_EQ(*m.hausdorff, 0.0);
+  EXPECT_DOUBLE_EQ(*m.curve_recall, 1.0);
   EXPECT_TRUE(m.topology->manifold);
   EXPECT_EQ(m.topology->closed_components, 1);
   EXPECT_TRUE(m.edges->exact);
@@ -59,12 +60,17 @@ TEST(EvaluateReconstruction, AMissingEdgeLeavesAnOpenCurveWithNoArea) {
   EXPECT_DOUBLE_EQ(*m.l2_error, 1.0);
   // The open curve lies on the square, but the gap's middle (0, 0.25) is 0.25 from it.
   EXPECT_NEAR(*m.hausdorff, 0.25 / std::sqrt(2.0), 1e-4);
+  // The gap, 0.5 long, is covered within the tolerance (0.01 of the diagonal) of its two ends.
+  const double tolerance = kCurveRecallToleranceOverDiagonal * std::sqrt(2.0);
+  EXPECT_DOUBLE_EQ(*m.curve_recall_tolerance, kCurveRecallToleranceOverDiagonal);  // the samples lie on the square
+  EXPECT_NEAR(*m.curve_recall, (3.5 + 2 * tolerance) / 4.0, 1e-12);
   EXPECT_FALSE(m.topology->manifold);
   EXPECT_EQ(m.topology->dangling_vertices, 2);
   EXPECT_EQ(m.topology->closed_components, 0);
   EXPECT_FALSE(m.edges->exact);
   EXPECT_DOUBLE_EQ(m.edges->precision, 1.0);
   EXPECT_DOUBLE_EQ(m.edges->recall, 7.0 / 8.0);
+  EXPECT_DOUBLE_EQ(m.edges->f1, 2 * (7.0 / 8.0) / (1 + 7.0 / 8.0));
   EXPECT_FALSE(m.medial_axis_hausdorff.has_value());
   EXPECT_FALSE(m.dominant_points.has_value());
 }
@@ -77,7 +83,19 @@ TEST(EvaluateReconstruction, ANonInterpolatingCurveUsesItsOwnVertices) {
   // Over the diagonal sqrt(2): the shift of 0.5.
   EXPECT_NEAR(*m.hausdorff, 0.5 / std::sqrt(2.0), 1e-5);
   EXPECT_TRUE(m.topology->manifold);
+  // Within the tolerance t of it: the right halves of the bottom and the top, each with t
+  // more at its left end, and t at each end of the right side (which its bottom and top
+  // cross): 1 + 4 t of the length 4.
+  const double tolerance = kCurveRecallToleranceOverDiagonal * std::sqrt(2.0);
+  EXPECT_NEAR(*m.curve_recall, (1.0 + 4 * tolerance) / 4.0, 1e-12);
   EXPECT_FALSE(m.edges.has_value());  // its edges do not join samples
+  // So the comparison with the true adjacency is null, not absent and not a number.
+  const auto json = metrics_to_json(m);
+  for (const char* key : {"exact", "edge_precision", "edge_recall", "edge_f1"}) {
+    ASSERT_TRUE(json.contains(key)) << key;
+    EXPECT_TRUE(json[key].is_null()) << key;
+  }
+  EXPECT_EQ(json["curve_recall"], *m.curve_recall);
 }
 
 TEST(OracleL2Error, MeasuresTheSamplingItself) {
@@ -86,6 +104,19 @@ TEST(OracleL2Error, MeasuresTheSamplingItself) {
   GroundTruth truth = unit_square_truth();
   truth.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 5}, {5, 6}, {6, 7}, {0, 7}};
   EXPECT_DOUBLE_EQ(oracle_l2_error(truth, kSamples), 0.125);
+}
+
+TEST(EvaluateReconstruction, CurveRecallToleratesWhatTheSamplingItselfForces) {
+  // Samples that skip the corner (1, 1): the true adjacency cuts it off, and the corner is
+  // 0.5 / sqrt(2) from that chord, so the tolerance grows to it and the true adjacency
+  // still recalls the whole curve.
+  GroundTruth truth = unit_square_truth();
+  truth.edges = {{0, 1}, {1, 2}, {2, 3}, {3, 5}, {5, 6}, {6, 7}, {0, 7}};
+  Reconstruction true_order;
+  true_order.curve_edges = truth.edges;
+  const ReconstructionMetrics m = evaluate_reconstruction(truth, kSamples, true_order);
+  EXPECT_NEAR(*m.curve_recall_tolerance, 0.5 / std::sqrt(2.0) / std::sqrt(2.0), 2e-4);
+  EXPECT_DOUBLE_EQ(*m.curve_recall, 1.0);
 }
 
 TEST(EvaluateReconstruction, MismatchedPointsAreRejected) {
@@ -108,6 +139,8 @@ TEST(MetricsJson, AbsentOutputsHaveNoKeysAndInfiniteDistancesAreNull) {
   EXPECT_TRUE(json["hausdorff"].is_null());
   EXPECT_EQ(json["manifold"], false);
   EXPECT_EQ(json["edge_precision"], 0.0);
+  EXPECT_EQ(json["edge_f1"], 0.0);
+  EXPECT_EQ(json["curve_recall"], 0.0);
   EXPECT_FALSE(json.contains("medial_axis_hausdorff"));
   EXPECT_FALSE(json.contains("dominant_points"));
 }

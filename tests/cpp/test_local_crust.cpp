@@ -1,14 +1,22 @@
 // The one-step crust and anti-crust (Gold 1999): exact on epsilon-samples at 0.1 on every
 // curve family; its interior anti-crust is the labeler's medial axis wherever both are exact;
-// co-circular vertices merge; the classification against its definition; refused input.
+// co-circular vertices merge; the classification against its definition; its skeleton stays
+// inside its region on glyph outlines with straight strokes; refused input.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include "baseline_families.h"
 #include "core/registry.h"
+#include "generators/generate.h"
 #include "local-crust/anti_crust_medial_axis.h"
 #include "local-crust/one_step_crust.h"
+#include "metrics/evaluate_reconstruction.h"
+#include "metrics/even_odd_areas.h"
+#include "metrics/segments.h"
 #include "test_support.h"
 
 namespace curvebench {
@@ -92,6 +100,60 @@ TEST(LocalCrust, ClassificationMatchesTheAngleCondition) {
     }
   }
   EXPECT_EQ(crust_edges, static_cast<int>(crust.curve.size()));
+}
+
+// DejaVu Sans 'A' as generators/real_outlines.py writes it (glyph_0041.rings): straight
+// strokes, where three random samples on one stroke make a flat triangle whose circumcentre
+// lies across the letter, far outside it: the skeleton kept such vertices before it was
+// restricted to its region (algorithms/local-crust/README.md).
+constexpr const char* kGlyphA = R"(0.341875 0.631875
+0.20796875 0.2690625
+0.47609375 0.2690625
+
+0.28609375 0.7290625000000001
+0.39796875 0.7290625000000001
+0.67578125 0.0
+0.57328125 0.0
+0.506875 0.18703125
+0.17828125 0.18703125
+0.111875 0.0
+0.0078125 0.0
+)";
+
+TEST(LocalCrust, SkeletonOfAGlyphWithStraightStrokesLiesInsideItsRegion) {
+  const auto rings = std::filesystem::temp_directory_path() / ("curvebench_glyph_a_" + std::to_string(::getpid()) + ".rings");
+  std::ofstream(rings) << kGlyphA;
+  int vertices_checked = 0;
+  for (const auto& [count, seed] : std::vector<std::pair<int, int>>{{200, 1}, {400, 2}, {800, 1}}) {
+    GeneratorSettings settings;
+    settings.family = "outline";
+    settings.input = rings.string();
+    settings.sampler = "random";
+    settings.count = count;
+    settings.seed = seed;
+    settings.dense = 2048;
+    const GeneratedInput input = generate(settings);
+    const auto result = local_crust_of(input.points);
+    const auto crust = edge_segments(input.points, *result.curve_edges);
+    // Each vertex must meet the crust's even-odd region as the L2 metric computes it (an
+    // exact arrangement, independent of the triangulation): a small square around the vertex
+    // overlaps the region. Its area, 4e-10, stands well above the rounding of the region's
+    // area in the overlap below.
+    for (const Point2& v : result.medial_axis->vertices) {
+      const double h = 1e-5;
+      const auto square = closed_polyline_segments(std::vector<Point2>{v + Point2{-h, -h}, v + Point2{h, -h}, v + Point2{h, h}, v + Point2{-h, h}});
+      const EvenOddAreas areas = even_odd_areas(crust, square);
+      const double overlap = 0.5 * (areas.first + areas.second - areas.symmetric_difference);
+      EXPECT_GT(overlap, 0.0) << count << " points, seed " << seed << ": vertex (" << v.x << ", " << v.y << ") is outside";
+      ++vertices_checked;
+    }
+    if (!result.medial_axis->vertices.empty()) {
+      const double distance = *evaluate_reconstruction(input.truth, input.points, result).medial_axis_hausdorff;
+      EXPECT_LT(distance, 0.5) << count << " points, seed " << seed;
+    }
+  }
+  std::filesystem::remove(rings);
+  EXPECT_GT(vertices_checked, 100);
 }
 
 TEST(LocalCrust, RefusesInputWithoutAClosedCurve) {

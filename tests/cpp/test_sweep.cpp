@@ -143,6 +143,22 @@ TEST(SweepPlan, AllMeansEveryAlgorithm) {
   EXPECT_EQ(plan.timeout_seconds, 60);
 }
 
+TEST(SweepPlan, AnInputGridMayCarryItsOwnAlgorithmsAndRepeatsArePlannedOnce) {
+  // The second grid repeats one input of the first (keys in another order) with a parameter
+  // grid whose default value repeats the first grid's run: the input and that run stay one.
+  const SweepPlan plan = plan_of(R"({"algorithms": ["square", "throws"],
+      "inputs": [{"family": "square", "epsilon": [0.1, 0.2]},
+                 {"algorithms": [{"name": "square", "parameters": {"keep": [8, 5]}}], "epsilon": 0.2, "family": "square"}]})");
+  ASSERT_EQ(plan.inputs.size(), 2u);
+  ASSERT_EQ(plan.runs.size(), 5u);
+  EXPECT_EQ(plan.runs[2].input, 1);
+  EXPECT_EQ(plan.runs[2].algorithm, "square");
+  EXPECT_EQ(plan.runs[2].parameters, Json::parse(R"({"keep": 8.0})"));
+  EXPECT_EQ(plan.runs[4].input, 1);
+  EXPECT_EQ(plan.runs[4].parameters, Json::parse(R"({"keep": 5.0})"));
+  EXPECT_FALSE(plan.inputs[1].contains("algorithms"));  // not a generator setting
+}
+
 TEST(SweepPlan, MistakesAreNamed) {
   auto error_of = [](const std::string& config) {
     try {
@@ -157,6 +173,8 @@ TEST(SweepPlan, MistakesAreNamed) {
   EXPECT_NE(error_of(R"({"inputs": []})").find("inputs"), std::string::npos);
   EXPECT_NE(error_of(R"({"inputs": [{"seed": 3}]})").find("seeds"), std::string::npos);
   EXPECT_NE(error_of(R"({"inputs": [{"epsilon": []}]})").find("empty list"), std::string::npos);
+  EXPECT_NE(error_of(R"({"inputs": [{"algorithms": ["nope"]}]})").find("unknown algorithm 'nope'"), std::string::npos);
+  EXPECT_NE(error_of(R"({"inputs": [{"algorithms": []}]})").find("inputs[0].algorithms"), std::string::npos);
 }
 
 TEST_F(SweepTest, EveryFailureBecomesARowWithItsStatusAndTheSweepGoesOn) {

@@ -186,7 +186,7 @@ NB_MODULE(_curvebench, m) {
       .def_ro("algorithm", &PyReconstruction::algorithm)
       .def_prop_ro("parameters", [](const PyReconstruction& r) { return parameters_dict(r.parameters); },
                    "Every parameter, defaults included, in its type.")
-      .def_prop_ro("points", [](const PyReconstruction& r) { return PointsView(r.points); },
+      .def_prop_ro("points", [](const PyReconstruction& r) { return PointsView(r.points); }, nb::rv_policy::reference,
               "The (n, 2) float64 input points the indices refer to (the caller's array when it was C-contiguous float64).")
       .def_ro("input_path", &PyReconstruction::input_path, "The points file it was read with, else ''.")
       .def_prop_ro("distinct_points", [](const PyReconstruction& r) { return r.result.distinct_points; })

@@ -53,7 +53,7 @@ curvebench_python_env() {
 # directory persists, so running the set-up again rebuilds only what changed; ccache, where
 # present, is the compiler launcher.
 curvebench_python_package() {
-  local settings=(--config-settings=build-dir="$CURVEBENCH_BUILD_DIR/python")
+  local settings=(--config-settings=build-dir="$CURVEBENCH_BUILD_DIR/python/{wheel_tag}")
   if command -v ccache >/dev/null; then
     settings+=(--config-settings=cmake.define.CMAKE_CXX_COMPILER_LAUNCHER=ccache)
   fi

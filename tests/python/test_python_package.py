@@ -4,6 +4,7 @@ one-line ValueErrors; two threads at once give what one gives.
 
 Runs with the venv's python, where the set-up installed the package."""
 import json
+import sys
 import threading
 
 import numpy as np
@@ -246,6 +247,32 @@ def test_two_threads_at_once_give_what_one_gives():
             np.testing.assert_array_equal(results[thread][name].points, points)
     np.testing.assert_array_equal(results[0]["fitconnect"].positions, alone["fitconnect"].positions)
     np.testing.assert_array_equal(results[1]["labeling"].medial_axis.vertices, alone["labeling"].medial_axis.vertices)
+
+
+def test_the_gil_is_released_while_the_algorithm_runs():
+    """With a switch interval far beyond the test's length, a thread that holds the GIL keeps
+    it until it gives it up; the main thread, waiting for the worker to start, can therefore
+    only run before the worker is done if reconstruct gives the GIL up."""
+    points, _ = curvebench.generate(family="rose", sampler="random", count=50000, seed=6)
+    started = threading.Event()
+    state = {"done": False}
+
+    def work():
+        started.set()
+        curvebench.reconstruct(points)
+        state["done"] = True
+
+    interval = sys.getswitchinterval()
+    sys.setswitchinterval(1000.0)
+    try:
+        worker = threading.Thread(target=work)
+        worker.start()
+        started.wait()
+        done_when_main_ran = state["done"]
+        worker.join()
+    finally:
+        sys.setswitchinterval(interval)
+    assert state["done"] and not done_when_main_ran
 
 
 def test_type_stubs_ship():

@@ -130,7 +130,7 @@ def evaluate(
     {"algorithm", "oracle_l2_error", "metrics"}, the values of its output (without the file
     names). `points` default to the reconstruction's own input points."""
     array = reconstruction.points if points is None else _points_array(points)
-    scores = json.loads(_curvebench.evaluate(truth, reconstruction, np.ascontiguousarray(array)))
+    scores = json.loads(_curvebench.evaluate(truth, reconstruction, array))
     return {"algorithm": reconstruction.algorithm, **scores}
 
 

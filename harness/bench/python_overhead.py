@@ -1,20 +1,26 @@
-"""What the Python package costs over the C++ library: on the scaling benchmark's `smooth`
-input (random points on the rose r = 1 + 0.3 cos 5t, in order along it), the wall time of
-curvebench.reconstruct(points) against the time the C++ reconstruction itself takes.
+"""What the Python package costs over the C++ library, on the scaling benchmark's `smooth`
+input (random points on the rose r = 1 + 0.3 cos 5t, in order along it), n = 10^6 by default.
 
-Two C++ references, each a median over the repetitions:
-  in-call  `timing_ms["total"]` of the same call: Algorithm::reconstruct's own clock, in
-           the same process, on the same points, so the ratio is exactly what the binding
-           adds (argument conversion, parameter JSON, GIL release, the result object).
-  cli      `timing_ms.total` of `curvebench reconstruct` on the same points written to a
-           file: the executable's build of the library (not position independent), so the
-           ratio also holds what building the library for a shared module costs.
-Not a test: it prints a table. Usage (from the repository root, after the set-up):
+Two parts, each a median over the repetitions:
+  binding  the wall time of curvebench.reconstruct(points) against `timing_ms["total"]` of
+           the same call: Algorithm::reconstruct's own clock, in the same process, on the same
+           points, so the ratio is exactly what the binding adds (argument conversion,
+           parameter JSON, GIL release, the result object), and a shared host's load weighs
+           on both alike.
+  build    the module links the libraries built position independent with hidden symbols;
+           with --curvebench and --module-build-curvebench (`ninja -C build/python/<wheel
+           tag> curvebench` builds the executable with the module's flags), the CPU time of
+           `curvebench reconstruct` on the same points file from each build, runs alternating
+           (CPU time, as the Google Benchmark suite measures, so that other processes on the
+           host do not enter it; it includes reading the points and writing the JSON, the same
+           in both).
+Not a test: it prints tables. Usage (from the repository root, after the set-up):
   .venv/bin/python harness/bench/python_overhead.py [--n 1000000] [--repetitions 7]
-      [--algorithm labeling ...] [--curvebench build/harness/curvebench]
+      [--algorithm labeling ...] [--curvebench build/harness/curvebench
+       --module-build-curvebench build/python/<wheel tag>/harness/curvebench]
 """
 import argparse
-import json
+import os
 import pathlib
 import statistics
 import subprocess
@@ -39,10 +45,13 @@ def python_call(points, algorithm):
     return (time.perf_counter() - start) * 1e3, result.timing_ms["total"]
 
 
-def cli_total(curvebench_bin, points_path, output, algorithm):
-    subprocess.run([curvebench_bin, "reconstruct", "--algorithm", algorithm, "--input", points_path, "--output", output],
-                   check=True, capture_output=True)
-    return json.loads(pathlib.Path(output).read_text())["timing_ms"]["total"]
+def cli_cpu_seconds(executable, points_path, output, algorithm):
+    child = subprocess.Popen([executable, "reconstruct", "--algorithm", algorithm, "--input", points_path, "--output", output],
+                             stdout=subprocess.DEVNULL)
+    _, status, usage = os.wait4(child.pid, 0)
+    if status != 0:
+        raise SystemExit(f"{executable} reconstruct --algorithm {algorithm} failed")
+    return usage.ru_utime + usage.ru_stime
 
 
 def main():
@@ -50,31 +59,38 @@ def main():
     parser.add_argument("--n", type=int, default=1_000_000)
     parser.add_argument("--repetitions", type=int, default=7)
     parser.add_argument("--algorithm", action="append", help="repeatable; default: labeling")
-    parser.add_argument("--curvebench", default="build/harness/curvebench", help="the executable ('' skips the cli column)")
+    parser.add_argument("--curvebench", help="the executable of the executables' build")
+    parser.add_argument("--module-build-curvebench", help="the executable built with the module's flags")
     parser.add_argument("--seed", type=int, default=1)
     args = parser.parse_args()
     points = smooth_rose(args.n, args.seed)
+    algorithms = args.algorithm or ["labeling"]
 
-    print(f"n = {args.n}, {args.repetitions} repetitions, medians in ms")
-    print("| algorithm | python call | in-call C++ total | python / in-call | cli C++ total | python / cli |")
-    print("|---|---|---|---|---|---|")
+    print(f"binding: n = {args.n}, {args.repetitions} repetitions, medians of wall time in ms")
+    print("| algorithm | python call | C++ reconstruct in the call | python / C++ |")
+    print("|---|---|---|---|")
+    for algorithm in algorithms:
+        python_call(points, algorithm)  # warm: page in the library and the allocator's arenas
+        calls = [python_call(points, algorithm) for _ in range(args.repetitions)]
+        wall = statistics.median(c[0] for c in calls)
+        inside = statistics.median(c[1] for c in calls)
+        print(f"| {algorithm} | {wall:.1f} | {inside:.1f} | {wall / inside:.4f} |", flush=True)
+
+    if not (args.curvebench and args.module_build_curvebench):
+        return
+    print(f"\nbuild: `curvebench reconstruct`, n = {args.n}, {args.repetitions} runs each, alternating, median CPU s")
+    print("| algorithm | executables' build | module's build | module / executables |")
+    print("|---|---|---|---|")
     with tempfile.TemporaryDirectory() as work:
-        points_path = pathlib.Path(work) / "points.xy"
-        if args.curvebench:
-            curvebench.write_points(points_path, points)
-        for algorithm in args.algorithm or ["labeling"]:
-            python_call(points, algorithm)  # warm: page in the library and the allocator's arenas
-            calls = [python_call(points, algorithm) for _ in range(args.repetitions)]
-            wall = statistics.median(c[0] for c in calls)
-            inside = statistics.median(c[1] for c in calls)
-            row = f"| {algorithm} | {wall:.1f} | {inside:.1f} | {wall / inside:.4f} |"
-            if args.curvebench:
-                cli = statistics.median(cli_total(args.curvebench, points_path, pathlib.Path(work) / "r.json", algorithm)
-                                        for _ in range(args.repetitions))
-                row += f" {cli:.1f} | {wall / cli:.4f} |"
-            else:
-                row += " | |"
-            print(row, flush=True)
+        points_path, output = pathlib.Path(work) / "points.xy", pathlib.Path(work) / "r.json"
+        curvebench.write_points(points_path, points)
+        for algorithm in algorithms:
+            plain, module = [], []
+            for _ in range(args.repetitions):
+                plain.append(cli_cpu_seconds(args.curvebench, points_path, output, algorithm))
+                module.append(cli_cpu_seconds(args.module_build_curvebench, points_path, output, algorithm))
+            a, b = statistics.median(plain), statistics.median(module)
+            print(f"| {algorithm} | {a:.3f} | {b:.3f} | {b / a:.4f} |", flush=True)
 
 
 if __name__ == "__main__":

@@ -13,7 +13,6 @@
 #include <nanobind/stl/string.h>
 #include <nanobind/stl/vector.h>
 
-#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -154,15 +153,10 @@ nb::dict parameters_dict(const ParameterValues& values) {
   return dict;
 }
 
-struct Generated {
-  OwnedPoints points;
-  GroundTruth truth;
-};
-
-Generated generate_input(const std::string& settings_json) {
+std::pair<OwnedPoints, GroundTruth> generate_input(const std::string& settings_json) {
   return library_call([&] {
     GeneratedInput input = generate(generator_settings_from_json(parse_json_text<nlohmann::ordered_json>(settings_json, "settings")));
-    return Generated{owned_points_array(std::move(input.points)), std::move(input.truth)};
+    return std::make_pair(owned_points_array(std::move(input.points)), std::move(input.truth));
   });
 }
 
@@ -255,13 +249,8 @@ NB_MODULE(_curvebench, m) {
 
   m.def("reconstruct", &reconstruct, nb::arg("points").noconvert(), nb::arg("algorithm"), nb::arg("parameters_json"),
         "Algorithm::reconstruct on the points in place (the GIL is released while it runs).");
-  m.def(
-      "generate",
-      [](const std::string& settings_json) {
-        Generated g = generate_input(settings_json);
-        return std::make_pair(g.points, std::move(g.truth));
-      },
-      nb::arg("settings_json"), "generate() of the generator library; settings as a sweep configuration's input object.");
+  m.def("generate", &generate_input, nb::arg("settings_json"),
+        "generate() of the generator library; settings as a sweep configuration's input object.");
   m.def(
       "evaluate",
       [](const GroundTruth& truth, const PyReconstruction& r, const PointsArray& points) {

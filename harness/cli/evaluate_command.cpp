@@ -1,16 +1,12 @@
-#include <cmath>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
 
 #include "cli/commands.h"
+#include "io/evaluation_json.h"
 #include "io/ground_truth_json.h"
-#include "io/metrics_json.h"
 #include "io/points_file.h"
 #include "io/reconstruction_json.h"
-#include "metrics/evaluate_reconstruction.h"
-#include "metrics/oracle_l2_error.h"
 
 namespace curvebench {
 namespace {
@@ -22,20 +18,10 @@ struct EvaluateOptions {
   std::string output;
 };
 
-nlohmann::json read_json_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open for reading");
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(path + ": not JSON: " + e.what());
-  }
-}
-
 void run(const EvaluateOptions& options) {
   const GroundTruth truth = read_ground_truth_file(options.truth);
-  const nlohmann::json result_json = read_json_file(options.result);
-  const Reconstruction reconstruction = reconstruction_from_json(result_json, options.result);
+  const ReconstructionFile result_file = read_reconstruction_file(options.result);
+  const nlohmann::json& result_json = result_file.json;
   std::string points_path = options.points;
   if (points_path.empty()) {
     if (!result_json.contains("input") || !result_json["input"].value("path", "").size()) {
@@ -44,11 +30,9 @@ void run(const EvaluateOptions& options) {
     points_path = result_json["input"]["path"].get<std::string>();
   }
   const std::vector<Point2> points = read_points_file(points_path);
-  ReconstructionMetrics metrics;
-  double oracle = 0.0;
+  nlohmann::ordered_json scores;
   try {
-    oracle = oracle_l2_error(truth, points);
-    metrics = evaluate_reconstruction(truth, points, reconstruction);
+    scores = evaluation_to_json(truth, points, result_file.reconstruction);
   } catch (const std::exception& e) {
     throw std::runtime_error(options.result + " against " + options.truth + ": " + e.what());
   }
@@ -57,8 +41,7 @@ void run(const EvaluateOptions& options) {
   json["result"] = options.result;
   json["points"] = points_path;
   json["algorithm"] = result_json.value("algorithm", "");
-  json["oracle_l2_error"] = std::isnan(oracle) ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(oracle);
-  json["metrics"] = metrics_to_json(metrics);
+  json.update(scores);
   const std::string text = json.dump(2) + "\n";
   std::cout << text;
   if (!options.output.empty()) write_file_atomically(options.output, text);

@@ -1,5 +1,6 @@
 #include "io/reconstruction_json.h"
 
+#include <fstream>
 #include <stdexcept>
 
 #include "io/parameters_json.h"
@@ -96,6 +97,19 @@ Reconstruction reconstruction_from_json(const nlohmann::json& json, const std::s
   } catch (const std::exception& e) {
     throw std::runtime_error(name + ": not a usable reconstruction: " + e.what());
   }
+}
+
+ReconstructionFile read_reconstruction_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open for reading");
+  ReconstructionFile file;
+  try {
+    file.json = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(path + ": not JSON: " + e.what());
+  }
+  file.reconstruction = reconstruction_from_json(file.json, path);
+  return file;
 }
 
 }  // namespace curvebench

@@ -25,4 +25,13 @@ nlohmann::ordered_json error_to_json(const std::string& algorithm, const std::st
 // or if its status is not "ok".
 Reconstruction reconstruction_from_json(const nlohmann::json& json, const std::string& name);
 
+// A reconstruction JSON file as read: the document (its algorithm, parameters and input path)
+// and the reconstruction in it. Throws std::runtime_error naming the path if the file cannot
+// be read, is not JSON or is not a usable reconstruction.
+struct ReconstructionFile {
+  nlohmann::json json;
+  Reconstruction reconstruction;
+};
+ReconstructionFile read_reconstruction_file(const std::string& path);
+
 }  // namespace curvebench

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing and builds curvebench. Sourced by the main job and by the tests.
 #   Debian packages: installed with apt-get when run as root, else the exact command is printed.
-#   Python packages: into .venv from reports/requirements.txt (pinned).
+#   Python packages: into .venv from reports/requirements.txt (pinned), then the project's own
+#   Python package `curvebench` (pyproject.toml), built in build/python/.
 #   Build: CMake + Ninja into build/ (override with CURVEBENCH_BUILD_DIR).
 set -euo pipefail
 
@@ -10,7 +11,7 @@ CURVEBENCH_BUILD_DIR="${CURVEBENCH_BUILD_DIR:-$CURVEBENCH_ROOT/build}"
 CURVEBENCH_VENV="$CURVEBENCH_ROOT/.venv"
 
 curvebench_debian_packages=(g++ cmake ninja-build libcgal-dev libgmp-dev libmpfr-dev libboost-dev
-  libbenchmark-dev nlohmann-json3-dev libcli11-dev googletest libgtest-dev libnanoflann-dev libeigen3-dev)
+  libbenchmark-dev nlohmann-json3-dev libcli11-dev googletest libgtest-dev libnanoflann-dev libeigen3-dev python3-dev)
 
 curvebench_install_debian_packages() {
   local missing=()
@@ -53,6 +54,20 @@ curvebench_python_env() {
   fi
 }
 
+# The package `curvebench` into .venv, built with the venv's pinned build tools (no build
+# isolation, no dependencies fetched: only the pinned packages are used). Its build
+# directory persists, so running the set-up again rebuilds only what changed; ccache, where
+# present, is the compiler launcher.
+curvebench_python_package() {
+  local settings=(--config-settings=build-dir="$CURVEBENCH_BUILD_DIR/python/{wheel_tag}")
+  if command -v ccache >/dev/null; then
+    settings+=(--config-settings=cmake.define.CMAKE_CXX_COMPILER_LAUNCHER=ccache)
+  fi
+  echo "setup: building the Python package curvebench into $CURVEBENCH_VENV" >&2
+  "$CURVEBENCH_VENV/bin/pip" install --quiet --disable-pip-version-check --no-build-isolation --no-deps \
+    "${settings[@]}" "$CURVEBENCH_ROOT" >&2
+}
+
 # curvebench_build [extra cmake arguments...]
 curvebench_build() {
   cmake -S "$CURVEBENCH_ROOT" -B "$CURVEBENCH_BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
@@ -61,3 +76,4 @@ curvebench_build() {
 
 curvebench_install_debian_packages "${curvebench_debian_packages[@]}"
 curvebench_python_env
+curvebench_python_package

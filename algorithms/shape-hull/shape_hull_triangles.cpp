@@ -133,10 +133,11 @@ std::uint8_t first_exit_corner(const DelaunayVoronoi& dv, int triangle) {
   return exit_corner;
 }
 
-// Everything a decision reads about one triangle, in one cache line. Sculpting takes the
+// Everything a decision reads about one triangle, in half a cache line. Sculpting takes the
 // triangles in order of circumradius, from all over the plane, so each visit would otherwise
-// miss the cache once for each of the layer's arrays it reads.
-struct alignas(64) TriangleState {
+// miss the cache once for each of the layer's arrays it reads; half a line rather than a
+// whole one halves the memory the visits range over.
+struct alignas(32) TriangleState {
   std::array<int, 3> corners;
   std::array<int, 3> neighbors;
   int rank;                     // position in the order of spec step 1
@@ -225,6 +226,23 @@ class RankQueue {
     }
   }
 
+  // The next rank the sweep will reach after the last one announced here, or -1 if there is
+  // none: a forecast of the pops, so that their memory can be requested early. A rank pushed
+  // later between the cursor and the forecast pops without having been announced.
+  int announce() {
+    announced_ = std::max(announced_, cursor_);
+    for (std::size_t word = static_cast<std::size_t>(announced_) >> 6; word < bits_.size(); ++word) {
+      std::uint64_t unannounced = bits_[word];
+      if (word == static_cast<std::size_t>(announced_) >> 6) unannounced &= ~std::uint64_t{0} << (announced_ & 63);
+      if (unannounced == 0) continue;
+      const int rank = static_cast<int>(word * 64) + std::countr_zero(unannounced);
+      announced_ = rank + 1;
+      return rank;
+    }
+    announced_ = static_cast<int>(bits_.size() * 64);
+    return -1;
+  }
+
   // The smallest rank in the queue, taken out, or -1 if the queue is empty.
   int pop() {
     if (!passed_.empty()) {
@@ -246,6 +264,7 @@ class RankQueue {
  private:
   std::vector<std::uint64_t> bits_;
   int cursor_ = 0;
+  int announced_ = 0;  // ranks below it have been announced or popped
   std::priority_queue<int, std::vector<int>, std::greater<int>> passed_;
 };
 
@@ -274,7 +293,35 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
     if (state[t].boundary_edges) queue.push(state[t].rank);
   }
 
+  // The pops announced and not yet popped, in rank order. A decision is a chain of loads that
+  // each wait for the one before (the triangle, then its corners, its neighbours, the walk),
+  // and on large input every link is a cache miss. The triangle of a rank announced now is
+  // requested at once; kLookahead pops before its own pop, when that has arrived, the sites,
+  // neighbours and circumcentre it leads to are requested as well, so that the misses of many
+  // upcoming pops overlap instead of following one another.
+  constexpr int kLookahead = 16;
+  std::array<int, 2 * kLookahead> announced{};
+  int oldest = 0, announced_count = 0;
+  auto announced_at = [&](int i) -> int& { return announced[(oldest + i) % announced.size()]; };
   for (int rank; (rank = queue.pop()) >= 0;) {
+    while (announced_count > 0 && announced_at(0) <= rank) oldest = (oldest + 1) % announced.size(), --announced_count;
+    for (int more = 0; more < 2 && announced_count < static_cast<int>(announced.size()); ++more) {
+      const int upcoming = queue.announce();
+      if (upcoming < 0) break;
+      __builtin_prefetch(&state[triangle_of_rank[upcoming]]);
+      announced_at(announced_count++) = upcoming;
+    }
+    if (announced_count > kLookahead) {
+      const int upcoming = triangle_of_rank[announced_at(announced_count - kLookahead)];
+      const auto& next = state[upcoming];
+      for (int corner = 0; corner < 3; ++corner) {
+        __builtin_prefetch(&on_boundary[next.corners[corner]]);
+        __builtin_prefetch(&dv.sites[next.corners[corner]]);
+        if (next.neighbors[corner] != kInfinite) __builtin_prefetch(&state[next.neighbors[corner]]);
+      }
+      __builtin_prefetch(&dv.circumcenters[upcoming]);
+      __builtin_prefetch(&dv.circumcenter_errors[upcoming]);
+    }
     const int t = triangle_of_rank[rank];
     // A popped triangle is always kept: it is removed only at a pop where it has one boundary
     // edge, and it has at most one queue entry per boundary edge, so none is left behind.

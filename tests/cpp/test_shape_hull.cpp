@@ -5,6 +5,7 @@
 // site, every Gabriel edge kept in the shape-hull graph.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <numbers>
 #include <random>
@@ -143,6 +144,36 @@ TEST(ShapeHull, NoisyRoseIsOneClosedPolygon) {
   const int size = closed_polygon_size(shape_hull_of(points));
   EXPECT_GE(size, 100);
   EXPECT_LE(size, 120);
+}
+
+// shape_hull_edges orders its edges with a counting sort: the result must be what the plain
+// way gives, every edge between a kept triangle and a removed or unbounded side, once,
+// through std::sort. Large enough inputs that sculpting pops hundreds of thousands of
+// triangles, far more than the queue announces ahead.
+TEST(ShapeHull, EdgesAreTheBoundaryOfTheKeptTrianglesInSortedOrder) {
+  std::mt19937 rng(13);
+  std::normal_distribution<double> noise(0, 2e-4);
+  std::vector<Point2> noisy_rose = testing::rose_in_curve_order(20000, 5);
+  for (auto& p : noisy_rose) p = p + Point2{noise(rng), noise(rng)};
+  std::uniform_real_distribution<double> coordinate(0, 1);
+  std::vector<Point2> uniform(5000);
+  for (auto& p : uniform) p = {coordinate(rng), coordinate(rng)};
+  for (const auto& points : {noisy_rose, uniform}) {
+    const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+    const std::vector<std::uint8_t> kept = shape_hull_triangles(dv);
+    std::vector<Edge> expected;
+    for (int t = 0; t < dv.triangle_count(); ++t) {
+      for (int corner = 0; corner < 3 && kept[t]; ++corner) {
+        const int other = dv.neighbors[t][corner];
+        if (other == kInfinite || !kept[other]) {
+          expected.push_back(make_edge(dv.triangles[t][(corner + 1) % 3], dv.triangles[t][(corner + 2) % 3]));
+        }
+      }
+    }
+    std::sort(expected.begin(), expected.end());
+    ASSERT_GT(expected.size(), 100u);
+    EXPECT_EQ(shape_hull_edges(dv), expected);
+  }
 }
 
 TEST(ShapeHull, AlwaysOneSimpleClosedPolygonThroughTheHull) {

@@ -20,6 +20,7 @@ namespace curvebench {
 namespace {
 
 using testing::cyclic_distance;
+using testing::inside_polygon;
 using testing::sample_polygon_evenly;
 using testing::sorted;
 
@@ -35,16 +36,6 @@ std::vector<Point2> ellipse_ring(Point2 centre, double a, double b, int n) {
     ring.push_back(centre + Point2{a * std::cos(t), b * std::sin(t)});
   }
   return ring;
-}
-
-// Even-odd containment in a polygon.
-bool inside(const std::vector<Point2>& polygon, Point2 q) {
-  bool in = false;
-  for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
-    const Point2 a = polygon[i], b = polygon[j];
-    if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y)) in = !in;
-  }
-  return in;
 }
 
 // A 3 x 2 ellipse with two elliptic holes and a third, round one: a shape with three holes.
@@ -85,6 +76,15 @@ TEST(LabelingHoles, NestedCurvesAreTwoClosedCurves) {
   }
 }
 
+TEST(LabelingHoles, TheHolesFamilyIsOneClosedCurvePerHoleAndTheOuterCurve) {
+  for (const int holes : {1, 2, 3}) {
+    for (std::uint64_t shape = 1; shape <= 3; ++shape) {
+      const Scene scene = holes_scene(holes, shape);
+      for (double epsilon : {0.1, 0.2, 0.3}) expect_exact("labeling-holes", scene, epsilon, shape);
+    }
+  }
+}
+
 TEST(LabelingHoles, ThePaperFillsTheInnerCurveOfNestedCurves) {
   const SampledScene samples = epsilon_sample(nested_curves_scene(1), 0.2, 1);
   const auto paper = run("labeling", samples.points);
@@ -99,20 +99,21 @@ TEST(LabelingHoles, ShapeWithThreeHolesIsFourClosedCurves) {
 }
 
 TEST(LabelingHoles, InteriorMedialAxisLiesBetweenTheOuterCurveAndTheHoles) {
-  const Scene scene = three_hole_scene();
-  const SampledScene samples = epsilon_sample(scene, 0.2, 4);
-  const auto result = run("labeling-holes", samples.points);
-  ASSERT_EQ(sorted(*result.curve_edges), sorted(samples.true_edges));
-  const MedialAxis& axis = *result.medial_axis;
-  for (const Point2& v : axis.vertices) {
-    ASSERT_TRUE(inside(scene.curves[0].points, v)) << "medial-axis vertex outside the shape";
-    for (std::size_t hole = 1; hole < scene.curves.size(); ++hole) {
-      ASSERT_FALSE(inside(scene.curves[hole].points, v)) << "medial-axis vertex inside hole " << hole;
+  for (const Scene& scene : {three_hole_scene(), holes_scene(3, 1), holes_scene(2, 2)}) {
+    const SampledScene samples = epsilon_sample(scene, 0.2, 4);
+    const auto result = run("labeling-holes", samples.points);
+    ASSERT_EQ(sorted(*result.curve_edges), sorted(samples.true_edges)) << scene.name;
+    const MedialAxis& axis = *result.medial_axis;
+    for (const Point2& v : axis.vertices) {
+      ASSERT_TRUE(inside_polygon(v, scene.curves[0].points)) << scene.name << ": medial-axis vertex outside the shape";
+      for (std::size_t hole = 1; hole < scene.curves.size(); ++hole) {
+        ASSERT_FALSE(inside_polygon(v, scene.curves[hole].points)) << scene.name << ": medial-axis vertex inside hole " << hole;
+      }
     }
+    // The axis is a deformation retract of the shape: one piece, one independent cycle per hole.
+    EXPECT_EQ(axis_components(axis), 1) << scene.name;
+    EXPECT_EQ(axis.edges.size() - axis.vertices.size() + 1, scene.curves.size() - 1) << scene.name;
   }
-  // The axis is a deformation retract of the shape: one piece, one independent cycle per hole.
-  EXPECT_EQ(axis_components(axis), 1);
-  EXPECT_EQ(axis.edges.size() - axis.vertices.size() + 1, scene.curves.size() - 1);
 }
 
 TEST(LabelingHoles, IslandInsideAHoleIsItsOwnCurveAndPartOfTheShape) {
@@ -125,9 +126,9 @@ TEST(LabelingHoles, IslandInsideAHoleIsItsOwnCurveAndPartOfTheShape) {
     EXPECT_EQ(sorted(*result.curve_edges), sorted(samples.true_edges)) << "seed " << seed;
     bool axis_in_island = false;
     for (const Point2& v : result.medial_axis->vertices) {
-      EXPECT_FALSE(inside(scene.curves[1].points, v) && !inside(scene.curves[2].points, v))
+      EXPECT_FALSE(inside_polygon(v, scene.curves[1].points) && !inside_polygon(v, scene.curves[2].points))
           << "medial-axis vertex in the hole around the island";
-      axis_in_island = axis_in_island || inside(scene.curves[2].points, v);
+      axis_in_island = axis_in_island || inside_polygon(v, scene.curves[2].points);
     }
     EXPECT_TRUE(axis_in_island) << "seed " << seed;
     // The ring around the hole and the island: two pieces, one cycle between them.

@@ -1,5 +1,6 @@
 #include "labeling-holes/label_voronoi_vertices_with_holes.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -85,6 +86,14 @@ std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, 
 
 VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   VoronoiLabels labels = label_voronoi_vertices(dv);
+  // After the paper's walks, a sample's cell holds an outer vertex exactly when a walk paired
+  // the sample: every outer vertex is one a walk kept, keeping it pairs its unpaired samples
+  // (Algorithm 1, lines 1-2), and hull samples are paired with the infinite vertex. So the
+  // paper's enclosed samples are among its unpaired ones, and one pass over the sources
+  // settles the common case, every sample paired, without a pass over the triangles.
+  if (std::find(labels.source_vertex.begin(), labels.source_vertex.end(), kUnpaired) == labels.source_vertex.end()) {
+    return labels;
+  }
   std::vector<int> enclosed = samples_enclosed_by_region(dv, labels.inner);
   if (enclosed.empty()) return labels;  // the paper's walks reached every sample's curve
 

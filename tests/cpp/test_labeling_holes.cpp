@@ -13,6 +13,8 @@
 #include "baseline_families.h"
 #include "core/registry.h"
 #include "generators/closed_curves.h"
+#include "labeling-holes/enclosed_samples.h"
+#include "labeling/label_voronoi_vertices.h"
 #include "generators/samplers.h"
 #include "test_support.h"
 
@@ -160,6 +162,27 @@ TEST(LabelingHoles, HoleCornersAreDominantPoints) {
     const int side = dp < outer ? outer / 4 : hole / 4;
     EXPECT_LE(std::min(along, side - along), 2) << "dominant point " << dp << " away from every corner";
   }
+}
+
+TEST(LabelingHoles, AfterThePaperTheEnclosedSamplesAreTheUnpairedOnes) {
+  // label_voronoi_vertices_with_holes skips the triangle pass when every sample is paired.
+  std::vector<std::vector<Point2>> inputs = {epsilon_sample(nested_curves_scene(2), 0.2, 1).points,
+                                             epsilon_sample(holes_scene(3, 3), 0.3, 2).points,
+                                             epsilon_sample(rose_scene(1.0, 0.3, 5), 0.4, 3).points,
+                                             arc_length_sample(l_shape_scene(0.6), 60, true, 4).points,
+                                             arc_length_sample(three_hole_scene(), 90, true, 5).points};
+  size_t enclosed_in_all = 0;
+  for (const auto& points : inputs) {
+    const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+    const VoronoiLabels labels = label_voronoi_vertices(dv);
+    std::vector<int> unpaired;
+    for (int s = 0; s < dv.site_count(); ++s) {
+      if (labels.source_vertex[s] == kUnpaired) unpaired.push_back(s);
+    }
+    EXPECT_EQ(samples_enclosed_by_region(dv, labels.inner), unpaired);
+    enclosed_in_all += unpaired.size();
+  }
+  EXPECT_GT(enclosed_in_all, 0u);  // the holes and the nested curve
 }
 
 // Where the paper's walks reach every curve, the extension must not change a thing.

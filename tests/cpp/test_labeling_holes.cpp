@@ -13,6 +13,7 @@
 #include "baseline_families.h"
 #include "core/registry.h"
 #include "generators/closed_curves.h"
+#include "generators/generate.h"
 #include "labeling-holes/enclosed_samples.h"
 #include "labeling/label_voronoi_vertices.h"
 #include "generators/samplers.h"
@@ -84,6 +85,21 @@ TEST(LabelingHoles, TheHolesFamilyIsOneClosedCurvePerHoleAndTheOuterCurve) {
       const Scene scene = holes_scene(holes, shape);
       for (double epsilon : {0.1, 0.2, 0.3}) expect_exact("labeling-holes", scene, epsilon, shape);
     }
+  }
+}
+
+TEST(LabelingHoles, ASparseInnerCurveThatPinchesTheOuterOneIsStillItsOwnCurve) {
+  // success_vs_epsilon.json's nested runs at epsilon 0.8: about 13 samples on the inner curve,
+  // and one Delaunay triangle joins two of them to an outer sample (the pinch of
+  // label_voronoi_vertices_with_holes.cpp).
+  for (const std::uint64_t seed : {1, 5}) {
+    GeneratorSettings settings;
+    settings.family = "nested";
+    settings.epsilon = 0.8;
+    settings.dense = 4096;
+    settings.seed = seed;
+    const GeneratedInput input = generate(settings);
+    EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges)) << "seed " << seed;
   }
 }
 

@@ -12,22 +12,23 @@ namespace {
 
 // The parts of `region` the walk did not keep that lie across missed closed curves. A part
 // is grown through the Voronoi edges between unkept vertices all three of whose samples are
-// enclosed, from the cells of the enclosed samples. It is taken when its boundary, the
-// Delaunay edges dual to the Voronoi edges leaving it, is a set of closed curves through
-// enclosed samples (every one of its samples has two boundary edges), and at most one of
-// those edges faces an unkept vertex left out for touching a found sample. Such a part is cut
-// off by samples that no walk reached, and its new curve edges leave every curve the paper
-// found as it was (the part meets no outer vertex: the frontier is kept).
+// enclosed, from the cells of the enclosed samples; its boundary is the Delaunay edges dual to
+// the Voronoi edges leaving it. A part is taken when its boundary is a set of closed curves
+// through enclosed samples (every one of its samples has two boundary edges). Such a part is
+// cut off by samples that no walk reached, and its new curve edges leave every curve the
+// paper found as it was (the part meets no outer vertex: the frontier is kept).
 //
-// The one unkept vertex it may face is a pinch: where a sparse missed curve passes within one
-// Delaunay triangle of a found curve, the triangle's vertex has a found sample, whose cell
-// holds outer vertices, so it is on the shape's side; the walk stopped it only because the
-// tangent estimates of the sparse curve are poor. It keeps its label and the missed curve
-// closes across the triangle's edge between its two missed samples. More than one such edge,
-// or a branching boundary, is the walk going astray (inside a pocket that the paper's
-// labeling closed off at its mouth, the frontier lies on the wrong side of the pocket walls,
-// and the unkept vertices there are many small pieces along the found walls): the part keeps
-// the paper's labels.
+// A pinched part is one whose boundary also faces unkept vertices left out of it for
+// touching a found sample. Where a sparse missed curve passes within one Delaunay triangle of
+// a found curve, the triangle's vertex has a found sample, whose cell holds outer vertices, so
+// it lies on the shape's side: the walk stopped it only because the tangent estimates of the
+// sparse curve are poor. It keeps its label, and the missed curve closes across the
+// triangle's edge between its two missed samples. Pinched parts are taken only when the taken
+// curves explain all the evidence, every enclosed sample lying on one of them. An enclosed
+// sample left over means the paper closed a pocket off at its mouth: the frontier then lies on
+// the pocket's side of its walls, the walk runs down the pocket as if it were the interior,
+// and a pinched part there (a glyph's crossbar inside the closed-off pocket of a `G`) is the
+// walk going astray. A part with a branching boundary keeps the paper's labels too.
 std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& region,
                                                      const std::vector<std::uint8_t>& kept,
                                                      const std::vector<int>& enclosed_samples) {
@@ -44,9 +45,9 @@ std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, 
   };
   auto in_a_part = [&](int t) { return unkept(t) && all_samples_enclosed(t); };
 
-  int edges_facing_a_pinch = 0;
+  bool pinched = false;
   auto grow_part = [&](int start) {
-    edges_facing_a_pinch = 0;
+    pinched = false;
     part.clear();
     boundary.clear();
     seen[start] = 1;
@@ -58,7 +59,7 @@ std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, 
       for (int k = 0; k < 3; ++k) {
         const int next = dv.neighbors[vertex][k];
         if (!in_a_part(next)) {
-          if (unkept(next)) ++edges_facing_a_pinch;
+          pinched = pinched || unkept(next);
           boundary.push_back({dv.triangles[vertex][(k + 1) % 3], dv.triangles[vertex][(k + 2) % 3]});
         } else if (!seen[next]) {
           seen[next] = 1;
@@ -78,8 +79,8 @@ std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, 
       for (int site : e) closed = closed && enclosed[site] && boundary_degree[site] == 2;
     }
     for (const Edge& e : boundary) boundary_degree[e[0]] = boundary_degree[e[1]] = 0;
-    if (!closed || edges_facing_a_pinch > 1) return Boundary::other;
-    return edges_facing_a_pinch == 0 ? Boundary::missed_closed_curves : Boundary::pinched_missed_closed_curves;
+    if (!closed) return Boundary::other;
+    return pinched ? Boundary::pinched_missed_closed_curves : Boundary::missed_closed_curves;
   };
 
   std::vector<std::uint8_t> on_a_taken_curve(dv.site_count(), 0);
@@ -106,8 +107,7 @@ std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, 
       t = dv.neighbors[t][(corner + 1) % 3];
     } while (t != first);
   }
-  // Pinched parts only when the taken curves explain all the evidence: an enclosed sample on
-  // no taken curve means a pocket the paper closed off, where a pinch is the walk astray.
+  // Pinched parts only when the taken curves explain all the evidence (see above).
   const bool every_enclosed_sample_explained =
       std::all_of(enclosed_samples.begin(), enclosed_samples.end(), [&](int site) { return on_a_taken_curve[site] != 0; });
   if (every_enclosed_sample_explained) {

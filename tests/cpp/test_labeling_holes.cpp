@@ -15,6 +15,8 @@
 #include "core/registry.h"
 #include "generators/closed_curves.h"
 #include "generators/generate.h"
+#include "generators/outline_import.h"
+#include "generators/random.h"
 #include "labeling-holes/enclosed_samples.h"
 #include "labeling/label_voronoi_vertices.h"
 #include "generators/samplers.h"
@@ -103,6 +105,53 @@ TEST(LabelingHoles, ASparseInnerCurveThatPinchesTheOuterOneIsStillItsOwnCurve) {
     EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges))
         << "epsilon " << epsilon << " seed " << seed;
   }
+}
+
+// DejaVu Sans glyphs as real_outlines.py writes them, sampled as the sweep samples an outline
+// (generate.cpp: dense 4096, `count` random samples along arc length, seed stream 1).
+SampledScene glyph_sample(const char* rings, int count, std::uint64_t seed) {
+  return arc_length_sample(polygon_scene("glyph", parse_rings_text(rings, "glyph"), 4096), count, true, derive_seed(seed, 1));
+}
+
+constexpr const char* kGlyphA =
+    "0.341875 0.631875\n0.20796875 0.2690625\n0.47609375 0.2690625\n\n"
+    "0.28609375 0.7290625\n0.39796875 0.7290625\n0.67578125 0\n0.57328125 0\n0.506875 0.18703125\n"
+    "0.17828125 0.18703125\n0.111875 0\n0.0078125 0\n";
+
+TEST(LabelingHoles, TheHoleOfAnAThatPinchesItsOuterStrokeIsItsOwnCurve) {
+  // holes.json's A at 400 points, seed 2: one Delaunay triangle joins two samples near the
+  // hole's apex to a sample of the outer stroke, and the walk stopped its vertex.
+  const SampledScene samples = glyph_sample(kGlyphA, 400, 2);
+  std::vector<Edge> hole_edges;
+  for (const Edge& e : samples.true_edges) {
+    if (samples.curve[e[0]] == 0) hole_edges.push_back(e);  // the first ring is the hole
+  }
+  auto holds_every_hole_edge = [&](const char* algorithm) {
+    const std::vector<Edge> edges = sorted(*run(algorithm, samples.points).curve_edges);
+    return std::includes(edges.begin(), edges.end(), hole_edges.begin(), hole_edges.end());
+  };
+  EXPECT_TRUE(holds_every_hole_edge("labeling-holes"));
+  EXPECT_FALSE(holds_every_hole_edge("labeling"));  // the paper fills the hole
+}
+
+TEST(LabelingHoles, NoPinchInsideAPocketThePaperClosedOff) {
+  // holes.json's G at 100 points, seed 2: the paper closes the G's pocket at its mouth, so
+  // the pocket walls are enclosed samples and the walk runs down the pocket; the crossbar
+  // would come out as a pinched hole. The taken curves would not hold the walls' samples, so
+  // the extension keeps the paper's output.
+  constexpr const char* kGlyphG =
+      "0.59515625 0.1040625\n0.59515625 0.29984375\n0.4340625 0.29984375\n0.4340625 0.3809375\n"
+      "0.6928125 0.3809375\n0.6928125 0.0678125\n0.6328125 0.032265625\n0.566875 0.0065625\n"
+      "0.49578124999999995 -0.0090234375\n0.42 -0.01421875\n0.26765625 0.0107421875\n0.1525 0.085625\n"
+      "0.0801953125 0.20515625\n0.05609375 0.36375\n0.0801953125 0.5227734374999999\n0.1525 0.64234375\n"
+      "0.26765625 0.7172265625\n0.42 0.7421875\n0.4894921875 0.7377734375\n0.5554687500000001 0.72453125\n"
+      "0.6171875 0.7028515625\n0.67390625 0.6728125\n0.67390625 0.5678125\n0.6174999999999999 0.6084765625\n"
+      "0.55765625 0.63765625\n0.49453125 0.655234375\n0.42828125 0.66109375\n0.3110546875 0.642421875\n"
+      "0.22718750000000001 0.58640625\n0.1769140625 0.4933984375\n0.16015625 0.36375\n"
+      "0.1769140625 0.234453125\n0.22718750000000001 0.1415625\n0.3110546875 0.085546875\n"
+      "0.42828125 0.066875\n0.47765625 0.06914062500000001\n0.52140625 0.0759375\n0.560390625 0.08750000000000001\n";
+  const SampledScene samples = glyph_sample(kGlyphG, 100, 2);
+  EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("labeling", samples.points).curve_edges));
 }
 
 TEST(LabelingHoles, ThePaperFillsTheInnerCurveOfNestedCurves) {

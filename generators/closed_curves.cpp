@@ -172,4 +172,52 @@ Scene nested_curves_scene(std::uint64_t seed, int dense) {
   return make_scene("nested_curves", {smooth_curve(std::move(outer_points)), smooth_curve(std::move(inner_points))});
 }
 
+Scene holes_scene(int count, std::uint64_t seed, int dense) {
+  require(count >= 1 && count <= 8, "holes: count must be between 1 and 8");
+  require(dense >= 3, "holes: dense must be at least 3");
+  const FourierRadius outer = random_fourier_radius(derive_seed(seed, 0));
+  std::vector<Point2> outer_points = polar_polyline(outer, dense);
+  double outer_max = 0.0;
+  for (const Point2 p : outer_points) outer_max = std::max(outer_max, norm(p));
+  constexpr double kGap = 0.1;
+  auto clearance_to_outer = [&](Point2 center) {
+    double least = HUGE_VAL;
+    for (const Point2 p : outer_points) least = std::min(least, distance(center, p));
+    return least;
+  };
+  Random random(derive_seed(seed, 1));
+  std::vector<DenseCurve> curves;  // the holes, then the outer curve first
+  std::vector<Point2> centers;
+  std::vector<double> reaches;  // radius of a disc around the centre holding the hole
+  for (int h = 0; h < count; ++h) {
+    auto hole = random_fourier_polyline(derive_seed(seed, 2 + h), dense);
+    double unit_reach = 0.0;
+    for (const Point2 p : hole) unit_reach = std::max(unit_reach, norm(p));
+    double reach = random.uniform(0.15, 0.3);
+    const double angle = random.uniform(0.0, kTwoPi);
+    // Centres inside the outer curve (star-shaped about the origin), rejected while the hole's
+    // disc comes within the gap of the outer curve or of another hole's disc; the hole
+    // shrinks when it does not fit, so placement always ends (the outer curve keeps 0.2 from
+    // the origin).
+    for (int attempt = 1;; ++attempt) {
+      const Point2 center{random.uniform(-outer_max, outer_max), random.uniform(-outer_max, outer_max)};
+      bool clear = norm(center) < outer(std::atan2(center.y, center.x)) && clearance_to_outer(center) > reach + kGap;
+      for (size_t j = 0; j < centers.size() && clear; ++j) clear = distance(center, centers[j]) > reach + reaches[j] + kGap;
+      if (clear) {
+        const double scale = reach / unit_reach;
+        for (Point2& p : hole) {
+          p = center + scale * Point2{p.x * std::cos(angle) - p.y * std::sin(angle), p.x * std::sin(angle) + p.y * std::cos(angle)};
+        }
+        centers.push_back(center);
+        reaches.push_back(reach);
+        break;
+      }
+      if (attempt % 100 == 0) reach *= 0.9;
+    }
+    curves.push_back(smooth_curve(std::move(hole)));
+  }
+  curves.insert(curves.begin(), smooth_curve(std::move(outer_points)));
+  return make_scene("holes", std::move(curves));
+}
+
 }  // namespace curvebench

@@ -44,6 +44,12 @@ Scene dumbbell_scene(double neck_half_width, int dense = 8192);  // Cassini oval
 Scene concavities_scene(int count, double depth, double width, int dense = 8192);
 // A random Fourier curve with a smaller random Fourier curve nested inside it.
 Scene nested_curves_scene(std::uint64_t seed, int dense = 4096);
+// A random Fourier curve with `count` (1 to 8) disjoint smaller random Fourier curves inside
+// it, its holes: the region is the ring between them (even-odd), whose medial axis runs
+// between the outer curve and the holes and between holes. Each hole is rotated at random and
+// scaled to reach 0.15 to 0.3 from its centre (the outer curve's mean radius is 1), centres
+// drawn until every hole keeps 0.1 from the outer curve and from the other holes.
+Scene holes_scene(int count, std::uint64_t seed, int dense = 4096);
 
 // Piecewise-smooth families with sharp corners (DenseCurve::corners records them).
 Scene star_scene(int points, double inner_ratio, int dense = 8192);  // star polygon, inner radius = ratio * outer

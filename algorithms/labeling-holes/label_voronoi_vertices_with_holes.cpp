@@ -1,5 +1,6 @@
 #include "labeling-holes/label_voronoi_vertices_with_holes.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -9,15 +10,25 @@
 namespace curvebench {
 namespace {
 
-// The parts of `region` the walk did not keep that lie across missed closed curves: a part
-// (grown through the Voronoi edges between its vertices, from the cells of the enclosed
-// samples) is taken when its boundary, the Delaunay edges dual to the Voronoi edges leaving
-// it, is a set of closed curves through enclosed samples only (every one of its samples has
-// two boundary edges). Such a part is cut off by samples that no walk reached, and its new
-// curve edges leave every curve the paper found as it was. A part touching a found curve, or
-// with a branching boundary, is the walk going astray (inside a pocket that the paper's
-// labeling closed off at its mouth, the frontier lies on the wrong side of the pocket walls)
-// and keeps the paper's labels.
+// The parts of `region` the walk did not keep that lie across missed closed curves. A part
+// is grown through the Voronoi edges between unkept vertices all three of whose samples are
+// enclosed, from the cells of the enclosed samples; its boundary is the Delaunay edges dual to
+// the Voronoi edges leaving it. A part is taken when its boundary is a set of closed curves
+// through enclosed samples (every one of its samples has two boundary edges). Such a part is
+// cut off by samples that no walk reached, and its new curve edges leave every curve the
+// paper found as it was (the part meets no outer vertex: the frontier is kept).
+//
+// A pinched part is one whose boundary also faces unkept vertices left out of it for
+// touching a found sample. Where a sparse missed curve passes within one Delaunay triangle of
+// a found curve, the triangle's vertex has a found sample, whose cell holds outer vertices, so
+// it lies on the shape's side: the walk stopped it only because the tangent estimates of the
+// sparse curve are poor. It keeps its label, and the missed curve closes across the
+// triangle's edge between its two missed samples. Pinched parts are taken only when the taken
+// curves explain all the evidence, every enclosed sample lying on one of them. An enclosed
+// sample left over means the paper closed a pocket off at its mouth: the frontier then lies on
+// the pocket's side of its walls, the walk runs down the pocket as if it were the interior,
+// and a pinched part there (a glyph's crossbar inside the closed-off pocket of a `G`) is the
+// walk going astray. A part with a branching boundary keeps the paper's labels too.
 std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& region,
                                                      const std::vector<std::uint8_t>& kept,
                                                      const std::vector<int>& enclosed_samples) {
@@ -28,8 +39,15 @@ std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, 
   std::vector<int> part, stack;
   std::vector<Edge> boundary;
   auto unkept = [&](int t) { return t != kInfinite && region[t] && !kept[t]; };
+  auto all_samples_enclosed = [&](int t) {
+    const auto& tri = dv.triangles[t];
+    return enclosed[tri[0]] && enclosed[tri[1]] && enclosed[tri[2]];
+  };
+  auto in_a_part = [&](int t) { return unkept(t) && all_samples_enclosed(t); };
 
+  bool pinched = false;
   auto grow_part = [&](int start) {
+    pinched = false;
     part.clear();
     boundary.clear();
     seen[start] = 1;
@@ -40,7 +58,8 @@ std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, 
       part.push_back(vertex);
       for (int k = 0; k < 3; ++k) {
         const int next = dv.neighbors[vertex][k];
-        if (!unkept(next)) {
+        if (!in_a_part(next)) {
+          pinched = pinched || unkept(next);
           boundary.push_back({dv.triangles[vertex][(k + 1) % 3], dv.triangles[vertex][(k + 2) % 3]});
         } else if (!seen[next]) {
           seen[next] = 1;
@@ -49,7 +68,8 @@ std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, 
       }
     }
   };
-  auto bounded_by_missed_closed_curves = [&] {
+  enum class Boundary { other, missed_closed_curves, pinched_missed_closed_curves };
+  auto classify_boundary = [&] {
     for (const Edge& e : boundary) {
       ++boundary_degree[e[0]];
       ++boundary_degree[e[1]];
@@ -59,24 +79,39 @@ std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, 
       for (int site : e) closed = closed && enclosed[site] && boundary_degree[site] == 2;
     }
     for (const Edge& e : boundary) boundary_degree[e[0]] = boundary_degree[e[1]] = 0;
-    return closed;
+    if (!closed) return Boundary::other;
+    return pinched ? Boundary::pinched_missed_closed_curves : Boundary::missed_closed_curves;
   };
 
+  std::vector<std::uint8_t> on_a_taken_curve(dv.site_count(), 0);
+  std::vector<int> pinched_parts;
   for (int site : enclosed_samples) {
     // Around the cell of an enclosed sample, a bounded cell (never the infinite vertex).
     const int first = dv.site_triangle[site];
     int t = first;
     do {
-      if (unkept(t) && !seen[t]) {
+      if (in_a_part(t) && !seen[t]) {
         grow_part(t);
-        if (bounded_by_missed_closed_curves()) {
+        const Boundary kind = classify_boundary();
+        if (kind != Boundary::other) {
+          for (const Edge& e : boundary) on_a_taken_curve[e[0]] = on_a_taken_curve[e[1]] = 1;
+        }
+        if (kind == Boundary::missed_closed_curves) {
           for (int vertex : part) across[vertex] = 1;
+        } else if (kind == Boundary::pinched_missed_closed_curves) {
+          pinched_parts.insert(pinched_parts.end(), part.begin(), part.end());
         }
       }
       const auto& tri = dv.triangles[t];
       const int corner = tri[0] == site ? 0 : (tri[1] == site ? 1 : 2);
       t = dv.neighbors[t][(corner + 1) % 3];
     } while (t != first);
+  }
+  // Pinched parts only when the taken curves explain all the evidence (see above).
+  const bool every_enclosed_sample_explained =
+      std::all_of(enclosed_samples.begin(), enclosed_samples.end(), [&](int site) { return on_a_taken_curve[site] != 0; });
+  if (every_enclosed_sample_explained) {
+    for (int vertex : pinched_parts) across[vertex] = 1;
   }
   return across;
 }
@@ -85,6 +120,14 @@ std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, 
 
 VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   VoronoiLabels labels = label_voronoi_vertices(dv);
+  // After the paper's walks, a sample's cell holds an outer vertex exactly when a walk paired
+  // the sample: every outer vertex is one a walk kept, keeping it pairs its unpaired samples
+  // (Algorithm 1, lines 1-2), and hull samples are paired with the infinite vertex. So the
+  // paper's enclosed samples are among its unpaired ones, and one pass over the sources
+  // settles the common case, every sample paired, without a pass over the triangles.
+  if (std::find(labels.source_vertex.begin(), labels.source_vertex.end(), kUnpaired) == labels.source_vertex.end()) {
+    return labels;
+  }
   std::vector<int> enclosed = samples_enclosed_by_region(dv, labels.inner);
   if (enclosed.empty()) return labels;  // the paper's walks reached every sample's curve
 

@@ -10,13 +10,15 @@
 // Rule, applied while such evidence exists. Level 1 is the paper's inner region. Within the
 // current region, Algorithm 1 walks from the region's frontier (walk_region_from_its_boundary.h):
 // it stays on the region's side and stops at the tangent lines (Definition 5) of the curves
-// the paper missed. What the walk does not keep splits into connected parts (through Voronoi
-// edges); a part whose boundary is a set of closed curves through enclosed samples only lies
-// across missed curves and takes the opposite label (a hole inside the shape, an island
-// inside a hole). Any other part keeps the paper's label: nothing shows a closed boundary
-// there, and relabelling it would move a curve the paper found. The flipped parts are the
-// next level's region, with its own enclosed samples. Without enclosed samples the labels
-// are the paper's, unchanged.
+// the paper missed. What the walk does not keep, among the vertices whose three samples are
+// enclosed, splits into connected parts (through Voronoi edges); a part whose boundary is a
+// set of closed curves through enclosed samples lies across missed curves and takes the
+// opposite label (a hole inside the shape, an island inside a hole). A part that also meets
+// left-out vertices of found samples (a sparse missed curve pinching a found one) is taken
+// only when the taken curves hold every enclosed sample. Any other part keeps the paper's
+// label: nothing shows a closed boundary there, and relabelling it would move a curve the
+// paper found. The flipped parts are the next level's region, with its own enclosed samples.
+// Without enclosed samples the labels are the paper's, unchanged.
 //
 // In:  the Delaunay/Voronoi arrays of samples of one or more closed curves, nested or not.
 // Out: the paper's VoronoiLabels (sources and counters from label_voronoi_vertices) with

@@ -8,6 +8,7 @@
 #include "generators/closed_curves.h"
 #include "generators/polylines_are_simple.h"
 #include "generators/samplers.h"
+#include "test_support.h"
 
 namespace curvebench {
 namespace {
@@ -26,7 +27,7 @@ double smallest_lfs(const Scene& scene) {
 
 TEST(Families, SimplePositiveLfsAndCertifiedEpsilonSamples) {
   for (const Scene& scene : {superellipse_scene(1.0, 1.0, 4.0), dumbbell_scene(0.2), concavities_scene(5, 0.7, 0.08),
-                             nested_curves_scene(3), star_scene(5, 0.4), square_scene(2.0), l_shape_scene(0.5),
+                             nested_curves_scene(3), holes_scene(1, 2), holes_scene(3, 4), star_scene(5, 0.4), square_scene(2.0), l_shape_scene(0.5),
                              horned_scene(0.8, 0.5)}) {
     EXPECT_EQ(find_polyline_crossing(polylines_of(scene)), "") << scene.name;
     EXPECT_GT(smallest_lfs(scene), 0.0) << scene.name;
@@ -54,6 +55,34 @@ TEST(Families, ShapeFacts) {
   for (const Point2 p : nested.curves[0].points) outer_min = std::min(outer_min, norm(p));
   for (const Point2 p : nested.curves[1].points) inner_max = std::max(inner_max, norm(p));
   EXPECT_LT(inner_max, outer_min);
+}
+
+TEST(Families, HolesLieInsideTheOuterCurveAndTheirLfsSeesTheOuterCurve) {
+  for (const int count : {1, 2, 3}) {
+    for (const std::uint64_t seed : {1, 2, 3, 4, 5}) {
+      const Scene scene = holes_scene(count, seed);
+      ASSERT_EQ(scene.curves.size(), static_cast<size_t>(count + 1));
+      const auto& outer = scene.curves[0].points;
+      for (int h = 1; h <= count; ++h) {
+        const auto& hole = scene.curves[h];
+        EXPECT_TRUE(testing::inside_polygon(hole.points.front(), outer)) << "seed " << seed << " hole " << h;
+        // The medial axis of the ring passes between a hole and the outer curve: no hole point
+        // is farther from it than from the outer curve, and the hole's point nearest the outer
+        // curve is at most half that distance from it (the midpoint is on the axis).
+        double gap = HUGE_VAL, lfs_at_gap = 0;
+        for (size_t i = 0; i < hole.points.size(); i += 4) {
+          double to_outer = HUGE_VAL;
+          for (const Point2 p : outer) to_outer = std::min(to_outer, distance(p, hole.points[i]));
+          EXPECT_LE(hole.lfs[i], to_outer) << "seed " << seed << " hole " << h;
+          if (to_outer < gap) gap = to_outer, lfs_at_gap = hole.lfs[i];
+        }
+        EXPECT_LE(lfs_at_gap, 0.51 * gap) << "seed " << seed << " hole " << h;
+      }
+    }
+  }
+  EXPECT_EQ(holes_scene(2, 7).curves[1].points, holes_scene(2, 7).curves[1].points);  // seeded
+  EXPECT_THROW(holes_scene(0, 1), std::invalid_argument);
+  EXPECT_THROW(holes_scene(9, 1), std::invalid_argument);
 }
 
 TEST(Families, PolygonImportRejectsSelfIntersectionAndKeepsClockwiseRingsCounterClockwise) {

@@ -8,6 +8,7 @@
 #include "generators/closed_curves.h"
 #include "generators/dominant_points.h"
 #include "generators/medial_axis.h"
+#include "test_support.h"
 
 namespace curvebench {
 namespace {
@@ -56,6 +57,16 @@ TEST(MedialAxis, ConnectedInsideEveryRegion) {
   double inner_max = 0;
   for (const Point2 p : nested.curves[1].points) inner_max = std::max(inner_max, norm(p));
   for (const Point2 v : ring.vertices) EXPECT_GT(norm(v), 0.5 * inner_max);
+  // Holes: one connected axis in the region between the outer curve and its holes, none of
+  // it inside a hole.
+  const Scene holes = holes_scene(3, 2);
+  const MedialAxis around_holes = interior_medial_axis(holes);
+  EXPECT_EQ(components(around_holes), 1);
+  for (const Point2 v : around_holes.vertices) {
+    for (size_t h = 1; h < holes.curves.size(); ++h) {
+      EXPECT_FALSE(testing::inside_polygon(v, holes.curves[h].points)) << "medial-axis vertex inside hole " << h;
+    }
+  }
 }
 
 TEST(DominantPoints, CornersAndCurvaturePeaks) {

@@ -55,6 +55,16 @@ inline std::vector<Edge> sorted(std::vector<Edge> edges) {
   return edges;
 }
 
+// Even-odd: whether q lies inside the closed polygon (the last vertex joins the first).
+inline bool inside_polygon(Point2 q, const std::vector<Point2>& polygon) {
+  bool inside = false;
+  for (size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
+    const Point2 a = polygon[i], b = polygon[j];
+    if ((a.y > q.y) != (b.y > q.y) && q.x < a.x + (q.y - a.y) * (b.x - a.x) / (b.y - a.y)) inside = !inside;
+  }
+  return inside;
+}
+
 // n points at angles 2*pi*k/n on a circle (co-circular up to rounding).
 inline std::vector<Point2> uniform_circle(int n, double radius = 1.0) {
   std::vector<Point2> points;

@@ -66,7 +66,7 @@ def test_truth_matches_points(run, tmp_path):
 
 
 def test_every_family_generates(run, tmp_path):
-    for family in ["circle", "ellipse", "superellipse", "rose", "random", "dumbbell", "concavities", "disjoint", "nested",
+    for family in ["circle", "ellipse", "superellipse", "rose", "random", "dumbbell", "concavities", "disjoint", "nested", "holes",
                    "star", "square", "l-shape", "horned"]:
         result, points, truth = generate(run, tmp_path, "--family", family, "--epsilon", "0.4", "--dense", "2048", name=family)
         assert result.returncode == 0, family + ": " + result.stderr

@@ -1,5 +1,6 @@
 #include "crust/crust_triangulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 
@@ -32,6 +33,9 @@ std::vector<Edge> delaunay_edges_with_voronoi_vertices(const DelaunayVoronoi& dv
       if (a >= 0 && b >= 0 && lower_address(&*f, &*f->neighbor(i))) edges.push_back(make_edge(a, b));
     }
   }
+  // The face order follows memory addresses, which differ between runs: sorted, the same
+  // input gives the same output.
+  std::sort(edges.begin(), edges.end());
   return edges;
 }
 

@@ -4,7 +4,7 @@
 //
 // In:  the shared Delaunay/Voronoi layer of the sites (dimension 2).
 // Out: the Delaunay edges between two sites in the triangulation of the sites and the
-//      layer's Voronoi vertices (circumcentres), as site pairs, each once, in no particular
+//      layer's Voronoi vertices (circumcentres), as site pairs, each once, in ascending
 //      order. A Voronoi vertex equal to a site counts as that site; one whose computed
 //      position is not finite (a hull triangle flat to rounding, its centre beyond the range
 //      of doubles) is left out: its only effect would be on hull edges.

@@ -10,10 +10,10 @@
 namespace curvebench {
 namespace {
 
-// The parts of `region` the walk did not keep that lie across missed closed curves. A part
-// is grown through the Voronoi edges between unkept vertices all three of whose samples are
-// enclosed, from the cells of the enclosed samples; its boundary is the Delaunay edges dual to
-// the Voronoi edges leaving it. A part is taken when its boundary is a set of closed curves
+// The vertices of the parts of `region` the walk did not keep that lie across missed closed
+// curves, each once, in no particular order. A part is grown through the Voronoi edges
+// between unkept vertices all three of whose samples are enclosed; its boundary is the
+// Delaunay edges dual to the Voronoi edges leaving it. A part is taken when its boundary is a set of closed curves
 // through enclosed samples (every one of its samples has two boundary edges). Such a part is
 // cut off by samples that no walk reached, and its new curve edges leave every curve the
 // paper found as it was (the part meets no outer vertex: the frontier is kept).
@@ -29,11 +29,12 @@ namespace {
 // the pocket's side of its walls, the walk runs down the pocket as if it were the interior,
 // and a pinched part there (a glyph's crossbar inside the closed-off pocket of a `G`) is the
 // walk going astray. A part with a branching boundary keeps the paper's labels too.
-std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& region,
-                                                     const std::vector<std::uint8_t>& kept,
-                                                     const std::vector<int>& enclosed_samples) {
+std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& region,
+                                            const std::vector<std::uint8_t>& kept,
+                                            const std::vector<int>& enclosed_samples) {
   const int triangles = dv.triangle_count();
-  std::vector<std::uint8_t> across(triangles, 0), seen(triangles, 0), enclosed(dv.site_count(), 0);
+  std::vector<int> across;
+  std::vector<std::uint8_t> seen(triangles, 0), enclosed(dv.site_count(), 0);
   for (int site : enclosed_samples) enclosed[site] = 1;
   std::vector<int> boundary_degree(dv.site_count(), 0);
   std::vector<int> part, stack;
@@ -85,34 +86,25 @@ std::vector<std::uint8_t> parts_across_missed_curves(const DelaunayVoronoi& dv, 
 
   std::vector<std::uint8_t> on_a_taken_curve(dv.site_count(), 0);
   std::vector<int> pinched_parts;
-  for (int site : enclosed_samples) {
-    // Around the cell of an enclosed sample, a bounded cell (never the infinite vertex).
-    const int first = dv.site_triangle[site];
-    int t = first;
-    do {
-      if (in_a_part(t) && !seen[t]) {
-        grow_part(t);
-        const Boundary kind = classify_boundary();
-        if (kind != Boundary::other) {
-          for (const Edge& e : boundary) on_a_taken_curve[e[0]] = on_a_taken_curve[e[1]] = 1;
-        }
-        if (kind == Boundary::missed_closed_curves) {
-          for (int vertex : part) across[vertex] = 1;
-        } else if (kind == Boundary::pinched_missed_closed_curves) {
-          pinched_parts.insert(pinched_parts.end(), part.begin(), part.end());
-        }
-      }
-      const auto& tri = dv.triangles[t];
-      const int corner = tri[0] == site ? 0 : (tri[1] == site ? 1 : 2);
-      t = dv.neighbors[t][(corner + 1) % 3];
-    } while (t != first);
+  // Every vertex of a part has its three samples enclosed, so a scan of the triangles finds
+  // the same parts as walks around the enclosed samples' cells, in memory order.
+  for (int t = 0; t < triangles; ++t) {
+    if (!in_a_part(t) || seen[t]) continue;
+    grow_part(t);
+    const Boundary kind = classify_boundary();
+    if (kind != Boundary::other) {
+      for (const Edge& e : boundary) on_a_taken_curve[e[0]] = on_a_taken_curve[e[1]] = 1;
+    }
+    if (kind == Boundary::missed_closed_curves) {
+      across.insert(across.end(), part.begin(), part.end());
+    } else if (kind == Boundary::pinched_missed_closed_curves) {
+      pinched_parts.insert(pinched_parts.end(), part.begin(), part.end());
+    }
   }
   // Pinched parts only when the taken curves explain all the evidence (see above).
   const bool every_enclosed_sample_explained =
       std::all_of(enclosed_samples.begin(), enclosed_samples.end(), [&](int site) { return on_a_taken_curve[site] != 0; });
-  if (every_enclosed_sample_explained) {
-    for (int vertex : pinched_parts) across[vertex] = 1;
-  }
+  if (every_enclosed_sample_explained) across.insert(across.end(), pinched_parts.begin(), pinched_parts.end());
   return across;
 }
 
@@ -134,9 +126,11 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   std::vector<std::uint8_t> region = labels.inner;
   while (!enclosed.empty()) {
     const std::vector<std::uint8_t> kept = walk_region_from_its_boundary(dv, region);
-    region = parts_across_missed_curves(dv, region, kept, enclosed);
-    for (int t = 0; t < dv.triangle_count(); ++t) {
-      if (region[t]) labels.inner[t] ^= 1;
+    const std::vector<int> flipped = parts_across_missed_curves(dv, region, kept, enclosed);
+    std::fill(region.begin(), region.end(), 0);
+    for (int t : flipped) {
+      region[t] = 1;
+      labels.inner[t] ^= 1;
     }
     enclosed = samples_enclosed_by_region(dv, region);
   }

@@ -1,39 +1,32 @@
 #include "labeling-holes/walk_region_from_its_boundary.h"
 
-#include <algorithm>
-#include <utility>
+#include <cstdint>
 
 #include "labeling/label_voronoi_vertices.h"
 #include "labeling/side_of_tangent_line.h"
+#include "voronoi/sort_by_decreasing_circumradius.h"
 
 namespace curvebench {
-namespace {
-
-bool faces_outside(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region, int vertex) {
-  for (int next : dv.neighbors[vertex]) {
-    if (next == kInfinite || !region[next]) return true;
-  }
-  return false;
-}
-
-}  // namespace
 
 std::vector<std::uint8_t> walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region) {
   const int triangles = dv.triangle_count();
+  // One byte of flags per vertex, so that a step of the walk reads one array, not four.
+  enum : std::uint8_t { kInRegion = 1, kSeed = 2, kVisited = 4, kKept = 8 };
+  std::vector<std::uint8_t> state(triangles);
+  for (int t = 0; t < triangles; ++t) state[t] = region[t] ? kInRegion : 0;
+  auto in_region = [&](int t) { return t != kInfinite && (state[t] & kInRegion); };
   std::vector<int> seeds;
-  std::vector<std::uint8_t> is_seed(triangles, 0);
   for (int t = 0; t < triangles; ++t) {
-    if (region[t] && faces_outside(dv, region, t)) {
+    if (!(state[t] & kInRegion)) continue;
+    const auto& next = dv.neighbors[t];
+    if (!in_region(next[0]) || !in_region(next[1]) || !in_region(next[2])) {
       seeds.push_back(t);
-      is_seed[t] = 1;
+      state[t] |= kSeed;
     }
   }
-  std::sort(seeds.begin(), seeds.end(), [&](int a, int b) {
-    return dv.circumradii[a] > dv.circumradii[b] || (dv.circumradii[a] == dv.circumradii[b] && a < b);
-  });
+  sort_by_decreasing_circumradius(dv, seeds);  // seeds are in index order: ties by smaller index
 
   std::vector<int> source(dv.site_count(), kUnpaired);
-  std::vector<std::uint8_t> visited(triangles, 0), kept(triangles, 0);
   std::vector<int> stack;
   // Definition 5 before pairing, as in label_voronoi_vertices (gap 1 of labeling/README.md).
   auto crosses_a_tangent_line = [&](int vertex) {
@@ -44,25 +37,29 @@ std::vector<std::uint8_t> walk_region_from_its_boundary(const DelaunayVoronoi& d
     return false;
   };
   for (int root : seeds) {
+    if (state[root] & kVisited) continue;  // reached by an earlier walk
     stack.assign(1, root);
     while (!stack.empty()) {
       const int vertex = stack.back();
       stack.pop_back();
-      if (std::exchange(visited[vertex], std::uint8_t{1})) continue;  // reached by an earlier branch
+      const std::uint8_t flags = state[vertex];
+      if (flags & kVisited) continue;  // reached by an earlier branch
+      state[vertex] = flags | kVisited;
       // Gap 2 of labeling/README.md: a stopped vertex ends its branch.
-      if (!is_seed[vertex] && crosses_a_tangent_line(vertex)) continue;
-      kept[vertex] = 1;
+      if (!(flags & kSeed) && crosses_a_tangent_line(vertex)) continue;
+      state[vertex] |= kKept;
       for (int site : dv.triangles[vertex]) {
         const int s = source[site];
         if (s == kUnpaired || dv.circumradii[vertex] > dv.circumradii[s]) source[site] = vertex;
       }
       for (int k = 2; k >= 0; --k) {
         const int next = dv.neighbors[vertex][k];
-        if (next != kInfinite && region[next] && !visited[next]) stack.push_back(next);
+        if (next != kInfinite && (state[next] & (kInRegion | kVisited)) == kInRegion) stack.push_back(next);
       }
     }
   }
-  return kept;
+  for (auto& flags : state) flags = (flags & kKept) ? 1 : 0;
+  return state;
 }
 
 }  // namespace curvebench

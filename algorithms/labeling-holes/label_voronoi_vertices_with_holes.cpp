@@ -127,6 +127,7 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   while (!enclosed.empty()) {
     const std::vector<std::uint8_t> kept = walk_region_from_its_boundary(dv, region);
     const std::vector<int> flipped = parts_across_missed_curves(dv, region, kept, enclosed);
+    if (flipped.empty()) break;  // no next region, so no evidence in it
     std::fill(region.begin(), region.end(), 0);
     for (int t : flipped) {
       region[t] = 1;

@@ -13,16 +13,14 @@ std::vector<std::uint8_t> walk_region_from_its_boundary(const DelaunayVoronoi& d
   // One byte of flags per vertex, so that a step of the walk reads one array, not four.
   enum : std::uint8_t { kInRegion = 1, kSeed = 2, kVisited = 4, kKept = 8 };
   std::vector<std::uint8_t> state(triangles);
-  for (int t = 0; t < triangles; ++t) state[t] = region[t] ? kInRegion : 0;
-  auto in_region = [&](int t) { return t != kInfinite && (state[t] & kInRegion); };
+  auto in_region = [&](int t) { return t != kInfinite && region[t]; };
   std::vector<int> seeds;
   for (int t = 0; t < triangles; ++t) {
-    if (!(state[t] & kInRegion)) continue;
+    if (!region[t]) continue;
     const auto& next = dv.neighbors[t];
-    if (!in_region(next[0]) || !in_region(next[1]) || !in_region(next[2])) {
-      seeds.push_back(t);
-      state[t] |= kSeed;
-    }
+    const bool frontier = !in_region(next[0]) || !in_region(next[1]) || !in_region(next[2]);
+    state[t] = frontier ? kInRegion | kSeed : kInRegion;
+    if (frontier) seeds.push_back(t);
   }
   sort_by_decreasing_circumradius(dv, seeds);  // seeds are in index order: ties by smaller index
 

@@ -18,6 +18,7 @@
 #include "generators/outline_import.h"
 #include "generators/random.h"
 #include "labeling-holes/enclosed_samples.h"
+#include "labeling-holes/relabel_bridging_ears.h"
 #include "labeling/label_voronoi_vertices.h"
 #include "generators/samplers.h"
 #include "test_support.h"
@@ -104,6 +105,65 @@ TEST(LabelingHoles, ASparseInnerCurveThatPinchesTheOuterOneIsStillItsOwnCurve) {
     const GeneratedInput input = generate(settings);
     EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges))
         << "epsilon " << epsilon << " seed " << seed;
+  }
+}
+
+GeneratedInput disjoint_curves(double epsilon, std::uint64_t seed) {
+  GeneratorSettings settings;
+  settings.family = "disjoint";
+  settings.epsilon = epsilon;
+  settings.dense = 4096;
+  settings.seed = seed;
+  return generate(settings);
+}
+
+TEST(LabelingHoles, AnEarBridgingTwoCurvesIsOutside) {
+  // success_vs_epsilon.json's disjoint runs where the paper's walk leaves an inner ear between
+  // two curves: its apex, a sample of the other curve, has four curve edges
+  // (relabel_bridging_ears.h).
+  for (const auto& [epsilon, seed] : std::vector<std::pair<double, std::uint64_t>>{{0.7, 3}, {0.7, 4}, {0.8, 3}}) {
+    const GeneratedInput input = disjoint_curves(epsilon, seed);
+    EXPECT_NE(sorted(*run("labeling", input.points).curve_edges), sorted(input.truth.edges))
+        << "the paper's bridge, epsilon " << epsilon << " seed " << seed;
+    EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges))
+        << "epsilon " << epsilon << " seed " << seed;
+  }
+}
+
+TEST(LabelingHoles, OfTwoEarsAtOneSampleTheBridgeIsRelabelledAndTheTipKept) {
+  // disjoint at epsilon 0.7, seed 4: input sample 8 is the apex of its own curve's ear at a
+  // tip (7, 8, 9) and of the bridge (8, 39, 40) to the next curve. Only the bridge, the ear
+  // without 8's shortest curve edge, becomes outer.
+  const GeneratedInput input = disjoint_curves(0.7, 4);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(input.points);
+  VoronoiLabels labels = label_voronoi_vertices(dv);
+  const std::vector<std::uint8_t> paper = labels.inner;
+  EXPECT_EQ(relabel_bridging_ears(dv, labels.inner), 1);
+  for (int t = 0; t < dv.triangle_count(); ++t) {
+    if (labels.inner[t] == paper[t]) continue;
+    std::vector<int> corners;
+    for (int site : dv.triangles[t]) corners.push_back(dv.input_of_site[site]);
+    std::sort(corners.begin(), corners.end());
+    EXPECT_EQ(corners, (std::vector<int>{8, 39, 40}));
+  }
+}
+
+TEST(LabelingHoles, NoEarIsRelabelledWhereEverySampleHasTwoCurveEdges) {
+  // The paper's labels where they are right (ears at the tips of sharp corners and of sparse
+  // curves, disjoint curves up to epsilon 0.6) and where it fills holes (their samples have no
+  // curve edge, not four).
+  std::vector<std::vector<Point2>> inputs = {sample_polygon_evenly(testing::star_polygon(0.6), 200),
+                                             epsilon_sample(nested_curves_scene(2), 0.2, 1).points,
+                                             epsilon_sample(holes_scene(3, 3), 0.3, 2).points};
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    inputs.push_back(arc_length_sample(star_scene(5, 0.45), 80, true, seed).points);
+    inputs.push_back(arc_length_sample(l_shape_scene(0.6), 60, true, seed).points);
+    for (double epsilon : {0.2, 0.4, 0.6}) inputs.push_back(disjoint_curves(epsilon, seed).points);
+  }
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const DelaunayVoronoi dv = build_delaunay_voronoi(inputs[i]);
+    VoronoiLabels labels = label_voronoi_vertices(dv);
+    EXPECT_EQ(relabel_bridging_ears(dv, labels.inner), 0) << "input " << i;
   }
 }
 

@@ -13,17 +13,26 @@
 // and every other sample keeps its count. It is the smallest change of labels that brings s
 // back towards two edges.
 //
-// Which ear, when the apex has two (its own ear at a tip of its curve, and the bridge): the
-// one without s's shortest curve edge. The edge from a sample to its nearest neighbour is an
-// edge of the curve (Dey and Kumar's NN-crust, SODA 1999, for epsilon < 1/3), and the ear
-// of the curve s lies on holds s's edges to its neighbours along the curve; the bridge spans
-// the gap between two curves, longer than the spacing along them. An ear whose apex has two
-// curve edges, or that holds the apex's shortest curve edge, keeps its label.
+// Which ear: one whose two edges at s are longer than every other curve edge at s. A bridge
+// crosses the medial axis between two curves, so an edge from s to a sample a of another
+// curve is at least lfs(s) + lfs(a) long, while s's edges to its neighbours along its curve
+// are at most 2 epsilon / (1 - epsilon) lfs(s) (Definition 4), shorter for epsilon <= 1/3:
+// the edges to keep are the apex's two shortest, as in Dey and Kumar's NN-crust (SODA 1999),
+// whose nearest-neighbour edge is a curve edge. An ear with an edge no longer than another
+// curve edge at s (its own curve's ear at a tip, or a stroke pinched at s) keeps its label,
+// and so does one whose apex is a corner of an isolated inner vertex: s would be left on a
+// closed curve of three samples (a sliver at a corner of a sparse outline), not its curve.
+//
+// Only where the bridges are all that is wrong: the ears are relabelled when, with them
+// outer, every sample has exactly two curve edges, and not at all otherwise. Where samples
+// are left with none or four (a sparse outline whose thin strokes the paper closes off, noise),
+// an ear at a sample with four edges may be the true interior of a stroke, and the paper's
+// labels are kept.
 //
 // In:  Delaunay/Voronoi arrays; `inner`, per triangle, 1 for inner (the infinite vertex is
 //      outer), as label_voronoi_vertices_with_holes leaves it.
-// Out: `inner` with those ears set to 0, in triangle order, each decided on the labels as
-//      they are after the ears before it; returns how many were relabelled.
+// Out: `inner` with those ears set to 0, all decided on the labels as they come in; returns
+//      how many were relabelled (0 when the labels are manifold already, or stay non-manifold).
 #pragma once
 
 #include <cstdint>

@@ -214,6 +214,39 @@ TEST(LabelingHoles, NoPinchInsideAPocketThePaperClosedOff) {
   EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("labeling", samples.points).curve_edges));
 }
 
+TEST(LabelingHoles, NoEarIsRelabelledAtAStrokePinchedAtOneSampleOrAtASliver) {
+  // holes.json's J at 50 points, seed 1: the paper's curve has four edges at the sample where
+  // the sparse hook meets the stroke, and each of its two ears there holds an edge of the
+  // outline. The c at 200 points, seed 1: a sample at the end of its stroke has four curve
+  // edges, two of them from an isolated sliver of three close samples. Both are samples with
+  // four edges and every other sample at two, where the ear is not a bridge
+  // (relabel_bridging_ears.h), so the extension keeps the paper's output.
+  constexpr const char* kGlyphJ =
+      "0.098125 0.7290625000000001\n0.19671875 0.7290625000000001\n0.19671875 0.05078125\n"
+      "0.18421875 -0.06300781250000001\n0.14671875 -0.140625\n"
+      "0.08148437500000001 -0.18527343750000003\n-0.01421875 -0.20015625\n-0.05171875 -0.20015625\n"
+      "-0.05171875 -0.1171875\n-0.0209375 -0.1171875\n0.034765625 -0.1080078125\n"
+      "0.07125000000000001 -0.08046875\n0.09140625 -0.029375000000000005\n0.098125 0.05078125\n";
+  constexpr const char* kGlyphC =
+      "0.48781250000000004 0.5259375000000001\n0.48781250000000004 0.441875\n0.4496484375 0.4603125\n"
+      "0.41140625000000003 0.4734375\n0.3729296875 0.48128906250000003\n0.3340625 0.48390625000000004\n"
+      "0.256328125 0.47003906250000005\n0.198125 0.4284375\n0.1619140625 0.36191406249999997\n"
+      "0.14984375 0.27296875\n0.1619140625 0.183984375\n0.198125 0.11734375\n0.256328125 0.075859375\n"
+      "0.3340625 0.06203125\n0.3729296875 0.0646484375\n0.41140625000000003 0.0725\n"
+      "0.4496484375 0.085625\n0.48781250000000004 0.1040625\n0.48781250000000004 0.0209375\n"
+      "0.44949218750000003 0.005625\n0.40984375 -0.0053125\n0.368359375 -0.011992187500000001\n"
+      "0.32421875 -0.01421875\n0.2133203125 0.005195312500000001\n0.1278125 0.06343750000000001\n"
+      "0.07332031250000001 0.1546484375\n0.055156250000000004 0.27296875\n"
+      "0.073515625 0.39242187500000003\n0.12859375 0.48328125\n0.21578125 0.5408203125000001\n"
+      "0.33015625 0.56\n0.37109375 0.5578515625\n0.41109375000000004 0.55140625\n"
+      "0.45003906250000003 0.5408203125\n";
+  for (const auto& [rings, count] : std::vector<std::pair<const char*, int>>{{kGlyphJ, 50}, {kGlyphC, 200}}) {
+    const SampledScene samples = glyph_sample(rings, count, 1);
+    EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("labeling", samples.points).curve_edges))
+        << count << " points";
+  }
+}
+
 TEST(LabelingHoles, ThePaperFillsTheInnerCurveOfNestedCurves) {
   const SampledScene samples = epsilon_sample(nested_curves_scene(1), 0.2, 1);
   const auto paper = run("labeling", samples.points);

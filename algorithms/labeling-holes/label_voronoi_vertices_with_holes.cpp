@@ -6,6 +6,7 @@
 
 #include "labeling-holes/enclosed_samples.h"
 #include "labeling-holes/relabel_bridging_ears.h"
+#include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
 #include "labeling-holes/walk_region_from_its_boundary.h"
 
 namespace curvebench {
@@ -141,6 +142,7 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     enclosed = samples_enclosed_by_region(dv, region);
   }
   relabel_bridging_ears(dv, labels.inner);
+  relabel_inner_vertices_outside_the_hull(dv, labels.inner);
   return labels;
 }
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "labeling-holes/curve_edges_per_sample.h"
+
 namespace curvebench {
 namespace {
 
@@ -20,17 +22,7 @@ int corner_of(const DelaunayVoronoi& dv, int triangle, int site) {
 
 int relabel_bridging_ears(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner) {
   auto is_inner = [&](int t) { return t != kInfinite && inner[t] != 0; };
-  // Curve edges per sample, as labeling/extract_shapes.h reads the curve: the Delaunay edges
-  // whose two sides differ in label, each counted once, from its inner side.
-  std::vector<int> curve_edges(dv.site_count(), 0);
-  for (int t = 0; t < dv.triangle_count(); ++t) {
-    if (!inner[t]) continue;
-    for (int k = 0; k < 3; ++k) {
-      if (is_inner(dv.neighbors[t][k])) continue;
-      ++curve_edges[dv.triangles[t][(k + 1) % 3]];
-      ++curve_edges[dv.triangles[t][(k + 2) % 3]];
-    }
-  }
+  const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
   // Relabelling ears only takes edges away, so a sample with fewer than two stays so.
   bool manifold = true;
   for (int count : curve_edges) {

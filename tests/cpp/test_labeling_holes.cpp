@@ -18,7 +18,9 @@
 #include "generators/outline_import.h"
 #include "generators/random.h"
 #include "labeling-holes/enclosed_samples.h"
+#include "labeling-holes/label_voronoi_vertices_with_holes.h"
 #include "labeling-holes/relabel_bridging_ears.h"
+#include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
 #include "labeling/label_voronoi_vertices.h"
 #include "generators/samplers.h"
 #include "test_support.h"
@@ -244,6 +246,34 @@ TEST(LabelingHoles, NoEarIsRelabelledAtAStrokePinchedAtOneSampleOrAtASliver) {
     const SampledScene samples = glyph_sample(rings, count, 1);
     EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("labeling", samples.points).curve_edges))
         << count << " points";
+  }
+}
+
+TEST(LabelingHoles, ACorridorOutsideTheHullBetweenTwoCurvesIsOutside) {
+  // success_vs_epsilon.json's disjoint runs where two inner vertices outside Conv(P) join two
+  // curves into one closed curve (relabel_inner_vertices_outside_the_hull.h).
+  for (const auto& [epsilon, seed] : std::vector<std::pair<double, std::uint64_t>>{{0.9, 1}, {1.0, 2}}) {
+    const GeneratedInput input = disjoint_curves(epsilon, seed);
+    EXPECT_NE(sorted(*run("labeling", input.points).curve_edges), sorted(input.truth.edges))
+        << "the paper's corridor, epsilon " << epsilon << " seed " << seed;
+    EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges))
+        << "epsilon " << epsilon << " seed " << seed;
+  }
+}
+
+TEST(LabelingHoles, InnerVerticesOutsideTheHullStayWhereRelabellingThemBreaksTheCurve) {
+  // The A at 50 and 100 points, seed 2: the labels have inner vertices outside Conv(P) (3 and
+  // 5), but the curve is no 1-manifold before or after relabelling them, so they stay.
+  for (const int count : {50, 100}) {
+    const SampledScene samples = glyph_sample(kGlyphA, count, 2);
+    const DelaunayVoronoi dv = build_delaunay_voronoi(samples.points);
+    VoronoiLabels labels = label_voronoi_vertices_with_holes(dv);
+    int outside = 0, wedge = 0;
+    for (int t = 0; t < dv.triangle_count(); ++t) outside += labels.inner[t] && !in_convex_hull(dv, dv.circumcenters[t], wedge);
+    EXPECT_GT(outside, 0) << count << " points";
+    const std::vector<std::uint8_t> before = labels.inner;
+    EXPECT_EQ(relabel_inner_vertices_outside_the_hull(dv, labels.inner), 0) << count << " points";
+    EXPECT_EQ(labels.inner, before) << count << " points";
   }
 }
 

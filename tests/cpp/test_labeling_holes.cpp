@@ -134,8 +134,8 @@ TEST(LabelingHoles, AnEarBridgingTwoCurvesIsOutside) {
 
 TEST(LabelingHoles, OfTwoEarsAtOneSampleTheBridgeIsRelabelledAndTheTipKept) {
   // disjoint at epsilon 0.7, seed 4: input sample 8 is the apex of its own curve's ear at a
-  // tip (7, 8, 9) and of the bridge (8, 39, 40) to the next curve. Only the bridge, the ear
-  // without 8's shortest curve edge, becomes outer.
+  // tip (7, 8, 9) and of the bridge (8, 39, 40) to the next curve. Only the bridge, whose two
+  // edges at 8 are longer than 8's other curve edges, becomes outer.
   const GeneratedInput input = disjoint_curves(0.7, 4);
   const DelaunayVoronoi dv = build_delaunay_voronoi(input.points);
   VoronoiLabels labels = label_voronoi_vertices(dv);

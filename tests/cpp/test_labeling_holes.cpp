@@ -150,7 +150,7 @@ TEST(LabelingHoles, OfTwoEarsAtOneSampleTheBridgeIsRelabelledAndTheTipKept) {
   }
 }
 
-TEST(LabelingHoles, NoEarIsRelabelledWhereEverySampleHasTwoCurveEdges) {
+TEST(LabelingHoles, NoEarIsRelabelledInThePapersRightLabelsOrItsFilledHoles) {
   // The paper's labels where they are right (ears at the tips of sharp corners and of sparse
   // curves, disjoint curves up to epsilon 0.6) and where it fills holes (their samples have no
   // curve edge, not four).

@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "labeling-holes/enclosed_samples.h"
+#include "labeling-holes/relabel_bridging_ears.h"
+#include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
 #include "labeling-holes/walk_region_from_its_boundary.h"
 
 namespace curvebench {
@@ -117,12 +119,11 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   // (Algorithm 1, lines 1-2), and hull samples are paired with the infinite vertex. So the
   // paper's enclosed samples are among its unpaired ones, and one pass over the sources
   // settles the common case, every sample paired, without a pass over the triangles.
-  if (std::find(labels.source_vertex.begin(), labels.source_vertex.end(), kUnpaired) == labels.source_vertex.end()) {
-    return labels;
+  std::vector<int> enclosed;
+  if (std::find(labels.source_vertex.begin(), labels.source_vertex.end(), kUnpaired) != labels.source_vertex.end()) {
+    enclosed = samples_enclosed_by_region(dv, labels.inner);
   }
-  std::vector<int> enclosed = samples_enclosed_by_region(dv, labels.inner);
-  if (enclosed.empty()) return labels;  // the paper's walks reached every sample's curve
-
+  // Without enclosed samples the paper's walks reached every sample's curve.
   std::vector<std::uint8_t> region = labels.inner;
   while (!enclosed.empty()) {
     const std::vector<std::uint8_t> kept = walk_region_from_its_boundary(dv, region);
@@ -135,6 +136,8 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     }
     enclosed = samples_enclosed_by_region(dv, region);
   }
+  relabel_bridging_ears(dv, labels.inner);
+  relabel_inner_vertices_outside_the_hull(dv, labels.inner);
   return labels;
 }
 

@@ -18,12 +18,14 @@
 // only when the taken curves hold every enclosed sample. Any other part keeps the paper's
 // label: nothing shows a closed boundary there, and relabelling it would move a curve the
 // paper found. The flipped parts are the next level's region, with its own enclosed samples.
-// Without enclosed samples the labels are the paper's, unchanged.
+// Without enclosed samples the labels are the paper's, unchanged. Last, the paper's bridges
+// between curves are relabelled: ears through one sample (relabel_bridging_ears.h), then
+// corridors outside the convex hull (relabel_inner_vertices_outside_the_hull.h).
 //
 // In:  the Delaunay/Voronoi arrays of samples of one or more closed curves, nested or not.
 // Out: the paper's VoronoiLabels (sources and counters from label_voronoi_vertices) with
-//      `inner` relabelled as above; the curve, medial axis and dominant points are read from
-//      it by labeling/extract_shapes.h.
+//      `inner` relabelled as above and its bridging ears outer; the curve, medial axis and
+//      dominant points are read from it by labeling/extract_shapes.h.
 #pragma once
 
 #include "labeling/label_voronoi_vertices.h"

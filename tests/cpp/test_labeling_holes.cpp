@@ -18,6 +18,9 @@
 #include "generators/outline_import.h"
 #include "generators/random.h"
 #include "labeling-holes/enclosed_samples.h"
+#include "labeling-holes/label_voronoi_vertices_with_holes.h"
+#include "labeling-holes/relabel_bridging_ears.h"
+#include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
 #include "labeling/label_voronoi_vertices.h"
 #include "generators/samplers.h"
 #include "test_support.h"
@@ -107,6 +110,65 @@ TEST(LabelingHoles, ASparseInnerCurveThatPinchesTheOuterOneIsStillItsOwnCurve) {
   }
 }
 
+GeneratedInput disjoint_curves(double epsilon, std::uint64_t seed) {
+  GeneratorSettings settings;
+  settings.family = "disjoint";
+  settings.epsilon = epsilon;
+  settings.dense = 4096;
+  settings.seed = seed;
+  return generate(settings);
+}
+
+TEST(LabelingHoles, AnEarBridgingTwoCurvesIsOutside) {
+  // success_vs_epsilon.json's disjoint runs where the paper's walk leaves an inner ear between
+  // two curves: its apex, a sample of the other curve, has four curve edges
+  // (relabel_bridging_ears.h).
+  for (const auto& [epsilon, seed] : std::vector<std::pair<double, std::uint64_t>>{{0.7, 3}, {0.7, 4}, {0.8, 3}}) {
+    const GeneratedInput input = disjoint_curves(epsilon, seed);
+    EXPECT_NE(sorted(*run("labeling", input.points).curve_edges), sorted(input.truth.edges))
+        << "the paper's bridge, epsilon " << epsilon << " seed " << seed;
+    EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges))
+        << "epsilon " << epsilon << " seed " << seed;
+  }
+}
+
+TEST(LabelingHoles, OfTwoEarsAtOneSampleTheBridgeIsRelabelledAndTheTipKept) {
+  // disjoint at epsilon 0.7, seed 4: input sample 8 is the apex of its own curve's ear at a
+  // tip (7, 8, 9) and of the bridge (8, 39, 40) to the next curve. Only the bridge, whose two
+  // edges at 8 are longer than 8's other curve edges, becomes outer.
+  const GeneratedInput input = disjoint_curves(0.7, 4);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(input.points);
+  VoronoiLabels labels = label_voronoi_vertices(dv);
+  const std::vector<std::uint8_t> paper = labels.inner;
+  EXPECT_EQ(relabel_bridging_ears(dv, labels.inner), 1);
+  for (int t = 0; t < dv.triangle_count(); ++t) {
+    if (labels.inner[t] == paper[t]) continue;
+    std::vector<int> corners;
+    for (int site : dv.triangles[t]) corners.push_back(dv.input_of_site[site]);
+    std::sort(corners.begin(), corners.end());
+    EXPECT_EQ(corners, (std::vector<int>{8, 39, 40}));
+  }
+}
+
+TEST(LabelingHoles, NoEarIsRelabelledInThePapersRightLabelsOrItsFilledHoles) {
+  // The paper's labels where they are right (ears at the tips of sharp corners and of sparse
+  // curves, disjoint curves up to epsilon 0.6) and where it fills holes (their samples have no
+  // curve edge, not four).
+  std::vector<std::vector<Point2>> inputs = {sample_polygon_evenly(testing::star_polygon(0.6), 200),
+                                             epsilon_sample(nested_curves_scene(2), 0.2, 1).points,
+                                             epsilon_sample(holes_scene(3, 3), 0.3, 2).points};
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    inputs.push_back(arc_length_sample(star_scene(5, 0.45), 80, true, seed).points);
+    inputs.push_back(arc_length_sample(l_shape_scene(0.6), 60, true, seed).points);
+    for (double epsilon : {0.2, 0.4, 0.6}) inputs.push_back(disjoint_curves(epsilon, seed).points);
+  }
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    const DelaunayVoronoi dv = build_delaunay_voronoi(inputs[i]);
+    VoronoiLabels labels = label_voronoi_vertices(dv);
+    EXPECT_EQ(relabel_bridging_ears(dv, labels.inner), 0) << "input " << i;
+  }
+}
+
 // DejaVu Sans glyphs as real_outlines.py writes them, sampled as the sweep samples an outline
 // (generate.cpp: dense 4096, `count` random samples along arc length, seed stream 1).
 SampledScene glyph_sample(const char* rings, int count, std::uint64_t seed) {
@@ -152,6 +214,67 @@ TEST(LabelingHoles, NoPinchInsideAPocketThePaperClosedOff) {
       "0.42828125 0.066875\n0.47765625 0.06914062500000001\n0.52140625 0.0759375\n0.560390625 0.08750000000000001\n";
   const SampledScene samples = glyph_sample(kGlyphG, 100, 2);
   EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("labeling", samples.points).curve_edges));
+}
+
+TEST(LabelingHoles, NoEarIsRelabelledAtAStrokePinchedAtOneSampleOrAtASliver) {
+  // holes.json's J at 50 points, seed 1: the paper's curve has four edges at the sample where
+  // the sparse hook meets the stroke, and each of its two ears there holds an edge of the
+  // outline. The c at 200 points, seed 1: a sample at the end of its stroke has four curve
+  // edges, two of them from an isolated sliver of three close samples. Both are samples with
+  // four edges and every other sample at two, where the ear is not a bridge
+  // (relabel_bridging_ears.h), so the extension keeps the paper's output.
+  constexpr const char* kGlyphJ =
+      "0.098125 0.7290625000000001\n0.19671875 0.7290625000000001\n0.19671875 0.05078125\n"
+      "0.18421875 -0.06300781250000001\n0.14671875 -0.140625\n"
+      "0.08148437500000001 -0.18527343750000003\n-0.01421875 -0.20015625\n-0.05171875 -0.20015625\n"
+      "-0.05171875 -0.1171875\n-0.0209375 -0.1171875\n0.034765625 -0.1080078125\n"
+      "0.07125000000000001 -0.08046875\n0.09140625 -0.029375000000000005\n0.098125 0.05078125\n";
+  constexpr const char* kGlyphC =
+      "0.48781250000000004 0.5259375000000001\n0.48781250000000004 0.441875\n0.4496484375 0.4603125\n"
+      "0.41140625000000003 0.4734375\n0.3729296875 0.48128906250000003\n0.3340625 0.48390625000000004\n"
+      "0.256328125 0.47003906250000005\n0.198125 0.4284375\n0.1619140625 0.36191406249999997\n"
+      "0.14984375 0.27296875\n0.1619140625 0.183984375\n0.198125 0.11734375\n0.256328125 0.075859375\n"
+      "0.3340625 0.06203125\n0.3729296875 0.0646484375\n0.41140625000000003 0.0725\n"
+      "0.4496484375 0.085625\n0.48781250000000004 0.1040625\n0.48781250000000004 0.0209375\n"
+      "0.44949218750000003 0.005625\n0.40984375 -0.0053125\n0.368359375 -0.011992187500000001\n"
+      "0.32421875 -0.01421875\n0.2133203125 0.005195312500000001\n0.1278125 0.06343750000000001\n"
+      "0.07332031250000001 0.1546484375\n0.055156250000000004 0.27296875\n"
+      "0.073515625 0.39242187500000003\n0.12859375 0.48328125\n0.21578125 0.5408203125000001\n"
+      "0.33015625 0.56\n0.37109375 0.5578515625\n0.41109375000000004 0.55140625\n"
+      "0.45003906250000003 0.5408203125\n";
+  for (const auto& [rings, count] : std::vector<std::pair<const char*, int>>{{kGlyphJ, 50}, {kGlyphC, 200}}) {
+    const SampledScene samples = glyph_sample(rings, count, 1);
+    EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("labeling", samples.points).curve_edges))
+        << count << " points";
+  }
+}
+
+TEST(LabelingHoles, ACorridorOutsideTheHullBetweenTwoCurvesIsOutside) {
+  // success_vs_epsilon.json's disjoint runs where two inner vertices outside Conv(P) join two
+  // curves into one closed curve (relabel_inner_vertices_outside_the_hull.h).
+  for (const auto& [epsilon, seed] : std::vector<std::pair<double, std::uint64_t>>{{0.9, 1}, {1.0, 2}}) {
+    const GeneratedInput input = disjoint_curves(epsilon, seed);
+    EXPECT_NE(sorted(*run("labeling", input.points).curve_edges), sorted(input.truth.edges))
+        << "the paper's corridor, epsilon " << epsilon << " seed " << seed;
+    EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges))
+        << "epsilon " << epsilon << " seed " << seed;
+  }
+}
+
+TEST(LabelingHoles, InnerVerticesOutsideTheHullStayWhereRelabellingThemBreaksTheCurve) {
+  // The A at 50 and 100 points, seed 2: the labels have inner vertices outside Conv(P) (3 and
+  // 5), but the curve is no 1-manifold before or after relabelling them, so they stay.
+  for (const int count : {50, 100}) {
+    const SampledScene samples = glyph_sample(kGlyphA, count, 2);
+    const DelaunayVoronoi dv = build_delaunay_voronoi(samples.points);
+    VoronoiLabels labels = label_voronoi_vertices_with_holes(dv);
+    int outside = 0, wedge = 0;
+    for (int t = 0; t < dv.triangle_count(); ++t) outside += labels.inner[t] && !in_convex_hull(dv, dv.circumcenters[t], wedge);
+    EXPECT_GT(outside, 0) << count << " points";
+    const std::vector<std::uint8_t> before = labels.inner;
+    EXPECT_EQ(relabel_inner_vertices_outside_the_hull(dv, labels.inner), 0) << count << " points";
+    EXPECT_EQ(labels.inner, before) << count << " points";
+  }
 }
 
 TEST(LabelingHoles, ThePaperFillsTheInnerCurveOfNestedCurves) {

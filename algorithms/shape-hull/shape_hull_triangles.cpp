@@ -53,10 +53,12 @@ int filtered_orientation(Point2 a, double error_a, Point2 b, double error_b, Poi
 // rounding errors cannot change its sign, else in rational arithmetic from the sites.
 class CentroidToCircumcentre {
  public:
-  CentroidToCircumcentre(const DelaunayVoronoi& dv, int triangle) : dv_(dv), triangle_(triangle) {
+  // `corners` are those of dv.triangles[triangle], passed in so that the caller can read them
+  // from memory it already has.
+  CentroidToCircumcentre(const DelaunayVoronoi& dv, int triangle, const std::array<int, 3>& corners)
+      : dv_(dv), corners_(corners) {
     constexpr double eps = std::numeric_limits<double>::epsilon();
-    const auto& tri = dv.triangles[triangle];
-    const Point2 a = dv.sites[tri[0]], b = dv.sites[tri[1]], d = dv.sites[tri[2]];
+    const Point2 a = dv.sites[corners[0]], b = dv.sites[corners[1]], d = dv.sites[corners[2]];
     centroid_ = {(a.x + b.x + d.x) / 3, (a.y + b.y + d.y) / 3};
     // Two additions and a division, each rounding by at most eps of the sum of magnitudes.
     centroid_error_ = 2 * eps * (std::abs(a.x) + std::abs(b.x) + std::abs(d.x) + std::abs(a.y) + std::abs(b.y) + std::abs(d.y));
@@ -84,8 +86,7 @@ class CentroidToCircumcentre {
  private:
   const RationalPoint& exact_centroid() {
     if (!exact_centroid_) {
-      const auto& tri = dv_.triangles[triangle_];
-      const RationalPoint a = exactly(dv_.sites[tri[0]]), b = exactly(dv_.sites[tri[1]]), d = exactly(dv_.sites[tri[2]]);
+      const RationalPoint a = exactly(dv_.sites[corners_[0]]), b = exactly(dv_.sites[corners_[1]]), d = exactly(dv_.sites[corners_[2]]);
       exact_centroid_ = RationalPoint{(a.x + b.x + d.x) / 3, (a.y + b.y + d.y) / 3};
     }
     return *exact_centroid_;
@@ -93,10 +94,9 @@ class CentroidToCircumcentre {
 
   const RationalPoint& exact_circumcentre() {
     if (!exact_circumcentre_) {
-      const auto& tri = dv_.triangles[triangle_];
-      const RationalPoint a = exactly(dv_.sites[tri[0]]);
-      const Rational bx = Rational(dv_.sites[tri[1]].x) - a.x, by = Rational(dv_.sites[tri[1]].y) - a.y;
-      const Rational cx = Rational(dv_.sites[tri[2]].x) - a.x, cy = Rational(dv_.sites[tri[2]].y) - a.y;
+      const RationalPoint a = exactly(dv_.sites[corners_[0]]);
+      const Rational bx = Rational(dv_.sites[corners_[1]].x) - a.x, by = Rational(dv_.sites[corners_[1]].y) - a.y;
+      const Rational cx = Rational(dv_.sites[corners_[2]].x) - a.x, cy = Rational(dv_.sites[corners_[2]].y) - a.y;
       const Rational d = 2 * (bx * cy - by * cx);  // nonzero: Delaunay triangles are never flat
       const Rational b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
       exact_circumcentre_ = RationalPoint{a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d};
@@ -105,7 +105,7 @@ class CentroidToCircumcentre {
   }
 
   const DelaunayVoronoi& dv_;
-  int triangle_;
+  std::array<int, 3> corners_;
   Point2 centroid_, circumcentre_;
   double centroid_error_, circumcentre_error_;
   std::optional<RationalPoint> exact_centroid_, exact_circumcentre_;
@@ -117,8 +117,8 @@ class CentroidToCircumcentre {
 constexpr std::uint8_t kCircumcentreInside = 3;
 
 std::uint8_t first_exit_corner(const DelaunayVoronoi& dv, int triangle) {
-  CentroidToCircumcentre segment(dv, triangle);
   const auto& tri = dv.triangles[triangle];
+  CentroidToCircumcentre segment(dv, triangle, tri);
   if (segment.side_of_edge(tri[1], tri[2]) >= 0 && segment.side_of_edge(tri[2], tri[0]) >= 0 &&
       segment.side_of_edge(tri[0], tri[1]) >= 0) {
     return kCircumcentreInside;
@@ -161,7 +161,7 @@ int corner_facing(const TriangleState& s, int neighbor) {
 bool circumcentre_outside(const DelaunayVoronoi& dv, const std::vector<TriangleState>& state, int triangle) {
   int exit_corner = state[triangle].first_exit;
   if (state[triangle].boundary_edges >> exit_corner & 1) return true;
-  CentroidToCircumcentre segment(dv, triangle);
+  CentroidToCircumcentre segment(dv, triangle, state[triangle].corners);
   for (int current = triangle;;) {
     const int next = state[current].neighbors[exit_corner];  // kept: the edge is not on the boundary
     const auto& corners = state[next].corners;
@@ -174,6 +174,139 @@ bool circumcentre_outside(const DelaunayVoronoi& dv, const std::vector<TriangleS
     current = next;
   }
 }
+
+// Requests the memory the pop of `triangle` will read, a few pops before it, so that it can
+// arrive meanwhile: its apex's boundary flag, its neighbours (for the pushes of spec step 3)
+// and, when a walk will follow, its corners and circumcentre. Nothing for a triangle that
+// will be kept without a walk (dangling, or its circumcentre inside it): boundary edges only
+// ever increase. `assumed_boundary` adds edges it will have on the boundary by its pop.
+// Returns true if its pop may remove it (rules a and c as far as they are known now).
+bool request_pop_memory(const DelaunayVoronoi& dv, const std::vector<TriangleState>& state, const std::vector<std::uint8_t>& on_boundary,
+                        int triangle, std::uint8_t assumed_boundary) {
+  const auto& s = state[triangle];
+  const std::uint8_t boundary = s.boundary_edges | assumed_boundary;
+  if (std::popcount(boundary) != 1 || s.first_exit == kCircumcentreInside) return false;
+  __builtin_prefetch(&on_boundary[s.corners[std::countr_zero(boundary)]]);
+  for (int corner = 0; corner < 3; ++corner) {
+    if (!(boundary >> corner & 1)) __builtin_prefetch(&state[s.neighbors[corner]]);
+  }
+  if (!(boundary >> s.first_exit & 1)) {
+    for (int corner = 0; corner < 3; ++corner) __builtin_prefetch(&dv.sites[s.corners[corner]]);
+    __builtin_prefetch(&dv.circumcenters[triangle]);
+    __builtin_prefetch(&dv.circumcenter_errors[triangle]);
+  }
+  return true;
+}
+
+// The walk of spec step 2c for an upcoming pop, run ahead of it only to request the memory
+// the real walk will read: the triangles along the segment and the one site each adds. It
+// starts after request_pop_memory; each advance() does one stage of loads, which can then
+// arrive while the sculpting does other work before the next advance(). It decides nothing:
+// its tests are approximate (plain double precision), the sculpting may change before the
+// pop, and circumcentre_outside walks again regardless. It stops where the real walk would
+// certainly not go on (a junction: boundary sites only ever increase; the circumcentre's
+// triangle reached), at a boundary edge, or once its pop has passed.
+class WalkRehearsal {
+ public:
+  WalkRehearsal() = default;
+  // `until_rank`: the rank of the pop after which the rehearsal is of no more use;
+  // `assumed_boundary` as for request_pop_memory.
+  WalkRehearsal(int triangle, std::uint8_t assumed_boundary, int until_rank)
+      : triangle_(triangle), current_(triangle), until_rank_(until_rank), assumed_boundary_(assumed_boundary) {}
+
+  // True once it has nothing more to request for a pop of `rank` or later.
+  bool done(int rank) const { return stage_ == Stage::kDone || rank >= until_rank_; }
+
+  // Does the next stage. `rehearse(triangle, assumed_boundary, until_rank)` receives the
+  // neighbours whose walks follow at once if this triangle is removed (see leads_outside).
+  template <class Rehearse>
+  void advance(const DelaunayVoronoi& dv, const std::vector<TriangleState>& state, const std::vector<std::uint8_t>& on_boundary,
+               Rehearse&& rehearse) {
+    switch (stage_) {
+      case Stage::kStart: {  // request_pop_memory's loads have arrived: the first crossing
+        const auto& s = state[current_];
+        const std::uint8_t boundary = s.boundary_edges | assumed_boundary_;
+        if (std::popcount(boundary) != 1 || on_boundary[s.corners[std::countr_zero(boundary)]]) {
+          stage_ = Stage::kDone;
+          return;
+        }
+        if (boundary >> s.first_exit & 1) {
+          leads_outside(dv, state, on_boundary, rehearse);
+          return;
+        }
+        const Point2 a = dv.sites[s.corners[0]], b = dv.sites[s.corners[1]], c = dv.sites[s.corners[2]];
+        from_ = {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
+        to_ = dv.circumcenters[current_];
+        cross_to(state, s.first_exit);
+        return;
+      }
+      case Stage::kEntered: {  // the next triangle's state has arrived: request its new site
+        const auto& s = state[next_];
+        entry_corner_ = static_cast<std::uint8_t>(corner_facing(s, current_));
+        __builtin_prefetch(&dv.sites[s.corners[entry_corner_]]);
+        stage_ = Stage::kSiteRequested;
+        return;
+      }
+      case Stage::kSiteRequested: {  // the site has arrived: where the segment leaves next_
+        const auto& s = state[next_];
+        const int exit_corner = left_of_segment(dv.sites[s.corners[entry_corner_]]) ? (entry_corner_ + 1) % 3 : (entry_corner_ + 2) % 3;
+        const Point2 p = dv.sites[s.corners[(exit_corner + 1) % 3]], q = dv.sites[s.corners[(exit_corner + 2) % 3]];
+        if (cross(q - p, to_ - p) >= 0) {
+          stage_ = Stage::kDone;
+          return;
+        }
+        if (s.boundary_edges >> exit_corner & 1) {
+          leads_outside(dv, state, on_boundary, rehearse);
+          return;
+        }
+        current_ = next_;
+        cross_to(state, exit_corner);
+        return;
+      }
+      case Stage::kDone:
+        return;
+    }
+  }
+
+ private:
+  enum class Stage : std::uint8_t { kStart, kEntered, kSiteRequested, kDone };
+
+  static double cross(Point2 u, Point2 v) { return u.x * v.y - u.y * v.x; }
+  bool left_of_segment(Point2 site) const { return cross(to_ - from_, site - from_) >= 0; }
+
+  // The walk reached the outside, so the triangle is likely removed at its pop. Its
+  // neighbours with a larger radius that are interior now then pop at once (from the queue's
+  // heap, never announced), with the shared edge as their one boundary edge: their pops are
+  // prepared and their walks rehearsed too. Not further: theirs are rarely removed.
+  template <class Rehearse>
+  void leads_outside(const DelaunayVoronoi& dv, const std::vector<TriangleState>& state, const std::vector<std::uint8_t>& on_boundary,
+                     Rehearse&& rehearse) {
+    stage_ = Stage::kDone;
+    if (assumed_boundary_ != 0) return;
+    const auto& s = state[triangle_];
+    for (int corner = 0; corner < 3; ++corner) {
+      if (s.boundary_edges >> corner & 1) continue;
+      const int neighbor = s.neighbors[corner];
+      if (state[neighbor].rank > s.rank || state[neighbor].boundary_edges != 0) continue;
+      const auto shared_edge = static_cast<std::uint8_t>(1 << corner_facing(state[neighbor], triangle_));
+      if (request_pop_memory(dv, state, on_boundary, neighbor, shared_edge)) rehearse(neighbor, shared_edge, until_rank_);
+    }
+  }
+
+  // Requests the triangle across the edge of current_ opposite exit_corner.
+  void cross_to(const std::vector<TriangleState>& state, int exit_corner) {
+    next_ = state[current_].neighbors[exit_corner];
+    __builtin_prefetch(&state[next_]);
+    stage_ = Stage::kEntered;
+  }
+
+  Point2 from_{}, to_{};
+  int triangle_ = 0, current_ = 0, next_ = 0;
+  int until_rank_ = 0;
+  std::uint8_t entry_corner_ = 0;
+  std::uint8_t assumed_boundary_ = 0;
+  Stage stage_ = Stage::kStart;
+};
 
 // The order of spec step 1: the triangles by decreasing circumradius. The reference leaves
 // equal radii in heap order; here the smaller triangle index goes first, so that the result
@@ -296,31 +429,48 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
   // The pops announced and not yet popped, in rank order. A decision is a chain of loads that
   // each wait for the one before (the triangle, then its corners, its neighbours, the walk),
   // and on large input every link is a cache miss. The triangle of a rank announced now is
-  // requested at once; kLookahead pops before its own pop, when that has arrived, the sites,
-  // neighbours and circumcentre it leads to are requested as well, so that the misses of many
-  // upcoming pops overlap instead of following one another.
+  // requested at once; kLookahead pops before its own pop, when that has arrived, what its
+  // pop reads is requested (request_pop_memory) and, on large input, its walk is rehearsed
+  // (WalkRehearsal), one stage per pop, so that the misses of many upcoming pops overlap
+  // instead of following one another.
   constexpr int kLookahead = 16;
+  constexpr int kMaxRehearsals = 64;
+  // Below this many triangles the arrays mostly fit a last-level cache, the misses are short,
+  // and rehearsing the walks costs more than it hides (harness/bench/README.md).
+  constexpr int kRehearsedWalksMinTriangles = 1 << 20;
+  const bool rehearse_walks = triangle_count >= kRehearsedWalksMinTriangles;
   std::array<int, 2 * kLookahead> announced{};
-  int oldest = 0, announced_count = 0;
+  int oldest = 0, announced_count = 0, requested_count = 0;  // the oldest requested_count are requested
   auto announced_at = [&](int i) -> int& { return announced[(oldest + i) % announced.size()]; };
+  std::array<WalkRehearsal, kMaxRehearsals> rehearsals;
+  int rehearsal_count = 0;
+  auto rehearse = [&](int triangle, std::uint8_t assumed_boundary, int until_rank) {
+    if (rehearsal_count < kMaxRehearsals) rehearsals[rehearsal_count++] = WalkRehearsal(triangle, assumed_boundary, until_rank);
+  };
   for (int rank; (rank = queue.pop()) >= 0;) {
-    while (announced_count > 0 && announced_at(0) <= rank) oldest = (oldest + 1) % announced.size(), --announced_count;
+    while (announced_count > 0 && announced_at(0) <= rank) {
+      oldest = (oldest + 1) % announced.size(), --announced_count;
+      requested_count = std::max(requested_count - 1, 0);
+    }
     for (int more = 0; more < 2 && announced_count < static_cast<int>(announced.size()); ++more) {
       const int upcoming = queue.announce();
       if (upcoming < 0) break;
       __builtin_prefetch(&state[triangle_of_rank[upcoming]]);
       announced_at(announced_count++) = upcoming;
     }
-    if (announced_count > kLookahead) {
-      const int upcoming = triangle_of_rank[announced_at(announced_count - kLookahead)];
-      const auto& next = state[upcoming];
-      for (int corner = 0; corner < 3; ++corner) {
-        __builtin_prefetch(&on_boundary[next.corners[corner]]);
-        __builtin_prefetch(&dv.sites[next.corners[corner]]);
-        if (next.neighbors[corner] != kInfinite) __builtin_prefetch(&state[next.neighbors[corner]]);
+    for (; requested_count < announced_count - kLookahead; ++requested_count) {
+      const int upcoming = announced_at(requested_count);
+      if (request_pop_memory(dv, state, on_boundary, triangle_of_rank[upcoming], 0) && rehearse_walks) {
+        rehearse(triangle_of_rank[upcoming], 0, upcoming);
       }
-      __builtin_prefetch(&dv.circumcenters[upcoming]);
-      __builtin_prefetch(&dv.circumcenter_errors[upcoming]);
+    }
+    for (int i = 0; i < rehearsal_count;) {
+      rehearsals[i].advance(dv, state, on_boundary, rehearse);
+      if (rehearsals[i].done(rank)) {
+        rehearsals[i] = rehearsals[--rehearsal_count];
+      } else {
+        ++i;
+      }
     }
     const int t = triangle_of_rank[rank];
     // A popped triangle is always kept: it is removed only at a pop where it has one boundary

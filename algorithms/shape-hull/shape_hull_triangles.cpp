@@ -111,26 +111,34 @@ class CentroidToCircumcentre {
   std::optional<RationalPoint> exact_centroid_, exact_circumcentre_;
 };
 
+// The sign of dot(b - a, c - a), exact: in double precision when the rounding cannot change
+// it, else in rational arithmetic.
+int dot_sign(Point2 a, Point2 b, Point2 c) {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  const Point2 u = b - a, v = c - a;
+  const double along_x = u.x * v.x, along_y = u.y * v.y;
+  const double dot = along_x + along_y;
+  // Shewchuk's bound for orient2d, an expression of the same shape, more than doubled.
+  if (std::abs(dot) > 4 * eps * (std::abs(along_x) + std::abs(along_y))) return dot > 0 ? 1 : -1;
+  const RationalPoint ea = exactly(a), eb = exactly(b), ec = exactly(c);
+  return CGAL::sign((eb.x - ea.x) * (ec.x - ea.x) + (eb.y - ea.y) * (ec.y - ea.y));
+}
+
 // Where the segment from the centroid of `triangle` to its circumcentre leaves it: the
 // corner opposite the edge it crosses, or kCircumcentreInside if the circumcentre lies in the
-// closed triangle (no obtuse angle). Depends on the triangle alone, not on the sculpting.
+// closed triangle. By the inscribed angle theorem the circumcentre lies strictly beyond the
+// edge opposite a corner exactly when the angle at that corner is obtuse. At most one is,
+// and the circumcentre is then strictly inside the other two edges' half-planes, so the
+// segment from the centroid leaves through that edge's interior. A right angle puts the
+// circumcentre on the edge: inside (spec step 2c). Depends on the triangle alone.
 constexpr std::uint8_t kCircumcentreInside = 3;
 
 std::uint8_t first_exit_corner(const DelaunayVoronoi& dv, int triangle) {
   const auto& tri = dv.triangles[triangle];
-  CentroidToCircumcentre segment(dv, triangle, tri);
-  if (segment.side_of_edge(tri[1], tri[2]) >= 0 && segment.side_of_edge(tri[2], tri[0]) >= 0 &&
-      segment.side_of_edge(tri[0], tri[1]) >= 0) {
-    return kCircumcentreInside;
+  for (std::uint8_t corner = 0; corner < 3; ++corner) {
+    if (dot_sign(dv.sites[tri[corner]], dv.sites[tri[(corner + 1) % 3]], dv.sites[tri[(corner + 2) % 3]]) < 0) return corner;
   }
-  // Now c != g, so the segment has a direction. It leaves a counter-clockwise triangle
-  // through the edge that runs from a corner right of it to a corner left of it. Exactly one
-  // edge does: g is strictly inside, so the line through g and c separates the corners.
-  bool left[3];
-  for (int i = 0; i < 3; ++i) left[i] = segment.left_of_segment(tri[i]);
-  std::uint8_t exit_corner = 0;
-  while (exit_corner < 2 && (left[(exit_corner + 1) % 3] || !left[(exit_corner + 2) % 3])) ++exit_corner;
-  return exit_corner;
+  return kCircumcentreInside;
 }
 
 // Everything a decision reads about one triangle, in half a cache line. Sculpting takes the
@@ -421,9 +429,17 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
   // Sites touching the outside: at first the hull sites, including those inside hull edges.
   std::vector<std::uint8_t> on_boundary(dv.on_hull.begin(), dv.on_hull.end());
 
+  // Whether a pop of the triangle could remove it. One that fails rule a (dangling), rule b
+  // (junction) or has its circumcentre inside it (rule c) fails it at every later pop too:
+  // boundary edges and boundary sites only ever increase, and the circumcentre is fixed. Its
+  // pop would change nothing, so it is not queued.
+  auto removable = [&](const TriangleState& s) {
+    return std::popcount(s.boundary_edges) == 1 && s.first_exit != kCircumcentreInside &&
+           !on_boundary[s.corners[std::countr_zero(s.boundary_edges)]];
+  };
   RankQueue queue(triangle_count);
   for (int t = 0; t < triangle_count; ++t) {  // spec step 1: each triangle with a hull edge, once
-    if (state[t].boundary_edges) queue.push(state[t].rank);
+    if (state[t].boundary_edges && removable(state[t])) queue.push(state[t].rank);
   }
 
   // The pops announced and not yet popped, in rank order. A decision is a chain of loads that
@@ -490,7 +506,7 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
       if (corner == boundary_corner) continue;
       auto& other = state[s.neighbors[corner]];
       other.boundary_edges |= 1 << corner_facing(other, t);
-      queue.push(other.rank);
+      if (removable(other)) queue.push(other.rank);
     }
   }
   std::vector<std::uint8_t> kept(triangle_count);

@@ -231,6 +231,9 @@ class WalkRehearsal {
   void advance(const DelaunayVoronoi& dv, const std::vector<TriangleState>& state, const std::vector<std::uint8_t>& on_boundary,
                Rehearse&& rehearse) {
     switch (stage_) {
+      case Stage::kWait:  // for request_pop_memory's loads, which take longer than one pop
+        stage_ = Stage::kStart;
+        return;
       case Stage::kStart: {  // request_pop_memory's loads have arrived: the first crossing
         const auto& s = state[current_];
         const std::uint8_t boundary = s.boundary_edges | assumed_boundary_;
@@ -277,7 +280,7 @@ class WalkRehearsal {
   }
 
  private:
-  enum class Stage : std::uint8_t { kStart, kEntered, kSiteRequested, kDone };
+  enum class Stage : std::uint8_t { kWait, kStart, kEntered, kSiteRequested, kDone };
 
   static double cross(Point2 u, Point2 v) { return u.x * v.y - u.y * v.x; }
   bool left_of_segment(Point2 site) const { return cross(to_ - from_, site - from_) >= 0; }
@@ -313,7 +316,7 @@ class WalkRehearsal {
   int until_rank_ = 0;
   std::uint8_t entry_corner_ = 0;
   std::uint8_t assumed_boundary_ = 0;
-  Stage stage_ = Stage::kStart;
+  Stage stage_ = Stage::kWait;
 };
 
 // The order of spec step 1: the triangles by decreasing circumradius. The reference leaves

@@ -11,6 +11,8 @@
 #include <numeric>
 #include <optional>
 #include <queue>
+#include <tuple>
+#include <utility>
 
 namespace curvebench {
 namespace {
@@ -357,16 +359,18 @@ std::vector<int> triangles_by_decreasing_circumradius(const DelaunayVoronoi& dv)
 // single sweep over all the bits. A triangle pushed after the cursor passed its rank (its
 // radius exceeds that of the triangle just removed) waits in a small heap instead, whose
 // ranks, all below the cursor, pop first. A rank pushed twice before it pops comes out
-// once: the reference's second pop finds the triangle dangling and changes nothing.
+// once: the reference's second pop finds the triangle dangling and changes nothing. The
+// heap keeps each rank's triangle with it: its pops come in no order of memory.
 class RankQueue {
  public:
-  explicit RankQueue(int size) : bits_((static_cast<std::size_t>(size) + 63) / 64, 0) {}
+  explicit RankQueue(const std::vector<int>& triangle_of_rank)
+      : triangle_of_rank_(triangle_of_rank), bits_((triangle_of_rank.size() + 63) / 64, 0) {}
 
-  void push(int rank) {
+  void push(int rank, int triangle) {
     if (rank >= cursor_) {
       bits_[rank >> 6] |= std::uint64_t{1} << (rank & 63);
     } else {
-      passed_.push(rank);
+      passed_.push({rank, triangle});
     }
   }
 
@@ -387,12 +391,12 @@ class RankQueue {
     return -1;
   }
 
-  // The smallest rank in the queue, taken out, or -1 if the queue is empty.
-  int pop() {
+  // The smallest rank in the queue and its triangle, taken out, or rank -1 if the queue is empty.
+  std::pair<int, int> pop() {
     if (!passed_.empty()) {
-      const int rank = passed_.top();
+      const auto smallest = passed_.top();
       passed_.pop();
-      return rank;
+      return smallest;
     }
     // Bits below the cursor are all clear: popped, and later pushes go to passed_.
     for (std::size_t word = static_cast<std::size_t>(cursor_) >> 6; word < bits_.size(); ++word) {
@@ -400,16 +404,17 @@ class RankQueue {
       const int rank = static_cast<int>(word * 64) + std::countr_zero(bits_[word]);
       bits_[word] &= bits_[word] - 1;
       cursor_ = rank + 1;
-      return rank;
+      return {rank, triangle_of_rank_[rank]};
     }
-    return -1;
+    return {-1, -1};
   }
 
  private:
+  const std::vector<int>& triangle_of_rank_;
   std::vector<std::uint64_t> bits_;
   int cursor_ = 0;
   int announced_ = 0;  // ranks below it have been announced or popped
-  std::priority_queue<int, std::vector<int>, std::greater<int>> passed_;
+  std::priority_queue<std::pair<int, int>, std::vector<std::pair<int, int>>, std::greater<>> passed_;
 };
 
 }  // namespace
@@ -440,9 +445,9 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
     return std::popcount(s.boundary_edges) == 1 && s.first_exit != kCircumcentreInside &&
            !on_boundary[s.corners[std::countr_zero(s.boundary_edges)]];
   };
-  RankQueue queue(triangle_count);
+  RankQueue queue(triangle_of_rank);
   for (int t = 0; t < triangle_count; ++t) {  // spec step 1: each triangle with a hull edge, once
-    if (state[t].boundary_edges && removable(state[t])) queue.push(state[t].rank);
+    if (state[t].boundary_edges && removable(state[t])) queue.push(state[t].rank, t);
   }
 
   // The pops announced and not yet popped, in rank order. A decision is a chain of loads that
@@ -466,7 +471,7 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
   auto rehearse = [&](int triangle, std::uint8_t assumed_boundary, int until_rank) {
     if (rehearsal_count < kMaxRehearsals) rehearsals[rehearsal_count++] = WalkRehearsal(triangle, assumed_boundary, until_rank);
   };
-  for (int rank; (rank = queue.pop()) >= 0;) {
+  for (auto [rank, t] = queue.pop(); rank >= 0; std::tie(rank, t) = queue.pop()) {
     while (announced_count > 0 && announced_at(0) <= rank) {
       oldest = (oldest + 1) % announced.size(), --announced_count;
       requested_count = std::max(requested_count - 1, 0);
@@ -491,7 +496,6 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
         ++i;
       }
     }
-    const int t = triangle_of_rank[rank];
     // A popped triangle is always kept: it is removed only at a pop where it has one boundary
     // edge, and it has at most one queue entry per boundary edge, so none is left behind.
     auto& s = state[t];
@@ -509,7 +513,7 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
       if (corner == boundary_corner) continue;
       auto& other = state[s.neighbors[corner]];
       other.boundary_edges |= 1 << corner_facing(other, t);
-      if (removable(other)) queue.push(other.rank);
+      if (removable(other)) queue.push(other.rank, s.neighbors[corner]);
     }
   }
   std::vector<std::uint8_t> kept(triangle_count);

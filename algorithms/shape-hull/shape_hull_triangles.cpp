@@ -333,22 +333,43 @@ std::vector<int> triangles_by_decreasing_circumradius(const DelaunayVoronoi& dv)
     int triangle;
   };
   const int count = dv.triangle_count();
-  std::vector<Keyed> items(count), buffer(count);
-  for (int t = 0; t < count; ++t) items[t] = {~std::bit_cast<std::uint64_t>(dv.circumradii[t]), t};
-  constexpr int kDigitBits = 16;
-  constexpr std::uint64_t kDigitMask = (1u << kDigitBits) - 1;
-  std::vector<int> start(kDigitMask + 2);
-  for (int shift = 0; shift < 64; shift += kDigitBits) {
-    std::fill(start.begin(), start.end(), 0);
-    for (const auto& item : items) ++start[((item.key >> shift) & kDigitMask) + 1];
-    // Radii of one scale share their sign and exponent bits: such a digit moves nothing.
-    if (*std::max_element(start.begin(), start.end()) == count) continue;
-    std::partial_sum(start.begin(), start.end(), start.begin());
-    for (const auto& item : items) buffer[start[(item.key >> shift) & kDigitMask]++] = item;
+  auto key_of = [&](int t) { return ~std::bit_cast<std::uint64_t>(dv.circumradii[t]); };
+  constexpr int kDigitBits = 16, kDigits = 64 / kDigitBits;
+  constexpr std::uint64_t kDigitMask = (std::uint64_t{1} << kDigitBits) - 1;
+  // Every digit's counts in one pass over the radii.
+  std::vector<int> counts(kDigits << kDigitBits, 0);
+  for (int t = 0; t < count; ++t) {
+    const std::uint64_t key = key_of(t);
+    for (int digit = 0; digit < kDigits; ++digit) ++counts[(digit << kDigitBits) + ((key >> (digit * kDigitBits)) & kDigitMask)];
+  }
+  // Radii of one scale share their sign and exponent bits: such a digit moves nothing.
+  std::vector<int> digits;
+  for (int digit = 0; digit < kDigits; ++digit) {
+    const auto first = counts.begin() + (digit << kDigitBits);
+    if (*std::max_element(first, first + (1 << kDigitBits)) != count) digits.push_back(digit);
+  }
+  // The first pass reads the triangles in index order straight from the radii, the last
+  // writes only their indices.
+  std::vector<Keyed> items, buffer;
+  if (digits.size() > 1) items.resize(count), buffer.resize(count);
+  std::vector<int> order(count);
+  if (digits.empty()) std::iota(order.begin(), order.end(), 0);
+  for (std::size_t pass = 0; pass < digits.size(); ++pass) {
+    const int shift = digits[pass] * kDigitBits;
+    int* next = counts.data() + (digits[pass] << kDigitBits);
+    std::exclusive_scan(next, next + (1 << kDigitBits), next, 0);
+    const bool first = pass == 0, last = pass + 1 == digits.size();
+    for (int i = 0; i < count; ++i) {
+      const Keyed item = first ? Keyed{key_of(i), i} : items[i];
+      const int position = next[(item.key >> shift) & kDigitMask]++;
+      if (last) {
+        order[position] = item.triangle;
+      } else {
+        buffer[position] = item;
+      }
+    }
     items.swap(buffer);
   }
-  std::vector<int> order(count);
-  for (int i = 0; i < count; ++i) order[i] = items[i].triangle;
   return order;
 }
 
@@ -423,9 +444,14 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
   if (dv.dimension != 2) return {};
   const int triangle_count = dv.triangle_count();
   const std::vector<int> triangle_of_rank = triangles_by_decreasing_circumradius(dv);
+  // Inverted in an array of a quarter of the state's size, whose scattered writes stay in
+  // cache, rather than in the state.
+  std::vector<int> rank_of_triangle(triangle_count);
+  for (int rank = 0; rank < triangle_count; ++rank) rank_of_triangle[triangle_of_rank[rank]] = rank;
   std::vector<TriangleState> state(triangle_count);
   for (int t = 0; t < triangle_count; ++t) {
     auto& s = state[t];
+    s.rank = rank_of_triangle[t];
     s.corners = dv.triangles[t];
     s.neighbors = dv.neighbors[t];
     s.boundary_edges = 0;
@@ -433,7 +459,6 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
     s.first_exit = first_exit_corner(dv, t);
     s.kept = true;
   }
-  for (int rank = 0; rank < triangle_count; ++rank) state[triangle_of_rank[rank]].rank = rank;
   // Sites touching the outside: at first the hull sites, including those inside hull edges.
   std::vector<std::uint8_t> on_boundary(dv.on_hull.begin(), dv.on_hull.end());
 

@@ -156,6 +156,10 @@ struct alignas(32) TriangleState {
   bool kept;
 };
 
+// True if exactly one bit of `edges` is set: a triangle with one boundary edge (spec rule a).
+// Not std::popcount, which without a POPCNT target becomes a library call.
+bool one_edge(std::uint8_t edges) { return edges != 0 && (edges & (edges - 1)) == 0; }
+
 // The corner of `s` opposite its edge shared with `neighbor` (two triangles share at most one).
 int corner_facing(const TriangleState& s, int neighbor) {
   return s.neighbors[0] == neighbor ? 0 : (s.neighbors[1] == neighbor ? 1 : 2);
@@ -195,7 +199,7 @@ bool request_pop_memory(const DelaunayVoronoi& dv, const std::vector<TriangleSta
                         int triangle, std::uint8_t assumed_boundary) {
   const auto& s = state[triangle];
   const std::uint8_t boundary = s.boundary_edges | assumed_boundary;
-  if (std::popcount(boundary) != 1 || s.first_exit == kCircumcentreInside) return false;
+  if (!one_edge(boundary) || s.first_exit == kCircumcentreInside) return false;
   __builtin_prefetch(&on_boundary[s.corners[std::countr_zero(boundary)]]);
   for (int corner = 0; corner < 3; ++corner) {
     if (!(boundary >> corner & 1)) __builtin_prefetch(&state[s.neighbors[corner]]);
@@ -239,7 +243,7 @@ class WalkRehearsal {
       case Stage::kStart: {  // request_pop_memory's loads have arrived: the first crossing
         const auto& s = state[current_];
         const std::uint8_t boundary = s.boundary_edges | assumed_boundary_;
-        if (std::popcount(boundary) != 1 || on_boundary[s.corners[std::countr_zero(boundary)]]) {
+        if (!one_edge(boundary) || on_boundary[s.corners[std::countr_zero(boundary)]]) {
           stage_ = Stage::kDone;
           return;
         }
@@ -467,7 +471,7 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
   // boundary edges and boundary sites only ever increase, and the circumcentre is fixed. Its
   // pop would change nothing, so it is not queued.
   auto removable = [&](const TriangleState& s) {
-    return std::popcount(s.boundary_edges) == 1 && s.first_exit != kCircumcentreInside &&
+    return one_edge(s.boundary_edges) && s.first_exit != kCircumcentreInside &&
            !on_boundary[s.corners[std::countr_zero(s.boundary_edges)]];
   };
   RankQueue queue(triangle_of_rank);
@@ -526,7 +530,7 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
     auto& s = state[t];
     // Spec step 2 tests the circumcentre first; here the tests go cheapest first, which
     // changes no outcome (all three must hold).
-    if (std::popcount(s.boundary_edges) != 1) continue;   // rule a: dangling
+    if (!one_edge(s.boundary_edges)) continue;            // rule a: dangling
     if (s.first_exit == kCircumcentreInside) continue;     // rule c, circumcentre in t
     const int boundary_corner = std::countr_zero(s.boundary_edges);
     const int apex = s.corners[boundary_corner];

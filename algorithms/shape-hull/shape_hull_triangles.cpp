@@ -8,9 +8,11 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <queue>
+#include <span>
 #include <tuple>
 #include <utility>
 
@@ -172,7 +174,7 @@ int corner_facing(const TriangleState& s, int neighbor) {
 // soon as the segment crosses a boundary edge, "inside" when it ends in (or on the border
 // of) a kept triangle. The walk never leaves the segment, so it terminates. The exit from
 // the first triangle is precomputed, and most walks end there.
-bool circumcentre_outside(const DelaunayVoronoi& dv, const std::vector<TriangleState>& state, int triangle) {
+bool circumcentre_outside(const DelaunayVoronoi& dv, std::span<const TriangleState> state, int triangle) {
   int exit_corner = state[triangle].first_exit;
   if (state[triangle].boundary_edges >> exit_corner & 1) return true;
   CentroidToCircumcentre segment(dv, triangle, state[triangle].corners);
@@ -195,7 +197,7 @@ bool circumcentre_outside(const DelaunayVoronoi& dv, const std::vector<TriangleS
 // will be kept without a walk (dangling, or its circumcentre inside it): boundary edges only
 // ever increase. `assumed_boundary` adds edges it will have on the boundary by its pop.
 // Returns true if its pop may remove it (rules a and c as far as they are known now).
-bool request_pop_memory(const DelaunayVoronoi& dv, const std::vector<TriangleState>& state, const std::vector<std::uint8_t>& on_boundary,
+bool request_pop_memory(const DelaunayVoronoi& dv, std::span<const TriangleState> state, const std::vector<std::uint8_t>& on_boundary,
                         int triangle, std::uint8_t assumed_boundary) {
   const auto& s = state[triangle];
   const std::uint8_t boundary = s.boundary_edges | assumed_boundary;
@@ -234,7 +236,7 @@ class WalkRehearsal {
   // Does the next stage. `rehearse(triangle, assumed_boundary, until_rank)` receives the
   // neighbours whose walks follow at once if this triangle is removed (see leads_outside).
   template <class Rehearse>
-  void advance(const DelaunayVoronoi& dv, const std::vector<TriangleState>& state, const std::vector<std::uint8_t>& on_boundary,
+  void advance(const DelaunayVoronoi& dv, std::span<const TriangleState> state, const std::vector<std::uint8_t>& on_boundary,
                Rehearse&& rehearse) {
     switch (stage_) {
       case Stage::kWait:  // for request_pop_memory's loads, which take longer than one pop
@@ -296,7 +298,7 @@ class WalkRehearsal {
   // heap, never announced), with the shared edge as their one boundary edge: their pops are
   // prepared and their walks rehearsed too. Not further: theirs are rarely removed.
   template <class Rehearse>
-  void leads_outside(const DelaunayVoronoi& dv, const std::vector<TriangleState>& state, const std::vector<std::uint8_t>& on_boundary,
+  void leads_outside(const DelaunayVoronoi& dv, std::span<const TriangleState> state, const std::vector<std::uint8_t>& on_boundary,
                      Rehearse&& rehearse) {
     stage_ = Stage::kDone;
     if (assumed_boundary_ != 0) return;
@@ -311,7 +313,7 @@ class WalkRehearsal {
   }
 
   // Requests the triangle across the edge of current_ opposite exit_corner.
-  void cross_to(const std::vector<TriangleState>& state, int exit_corner) {
+  void cross_to(std::span<const TriangleState> state, int exit_corner) {
     next_ = state[current_].neighbors[exit_corner];
     __builtin_prefetch(&state[next_]);
     stage_ = Stage::kEntered;
@@ -354,8 +356,9 @@ std::vector<int> triangles_by_decreasing_circumradius(const DelaunayVoronoi& dv)
   }
   // The first pass reads the triangles in index order straight from the radii, the last
   // writes only their indices.
-  std::vector<Keyed> items, buffer;
-  if (digits.size() > 1) items.resize(count), buffer.resize(count);
+  // Allocated without zero-filling: every element is written before it is read.
+  std::unique_ptr<Keyed[]> items, buffer;
+  if (digits.size() > 1) items = std::make_unique_for_overwrite<Keyed[]>(count), buffer = std::make_unique_for_overwrite<Keyed[]>(count);
   std::vector<int> order(count);
   if (digits.empty()) std::iota(order.begin(), order.end(), 0);
   for (std::size_t pass = 0; pass < digits.size(); ++pass) {
@@ -452,7 +455,8 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
   // cache, rather than in the state.
   std::vector<int> rank_of_triangle(triangle_count);
   for (int rank = 0; rank < triangle_count; ++rank) rank_of_triangle[triangle_of_rank[rank]] = rank;
-  std::vector<TriangleState> state(triangle_count);
+  const auto state_storage = std::make_unique_for_overwrite<TriangleState[]>(triangle_count);  // all written below
+  const std::span<TriangleState> state(state_storage.get(), triangle_count);
   for (int t = 0; t < triangle_count; ++t) {
     auto& s = state[t];
     s.rank = rank_of_triangle[t];

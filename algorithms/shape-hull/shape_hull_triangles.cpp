@@ -455,6 +455,17 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
   // cache, rather than in the state.
   std::vector<int> rank_of_triangle(triangle_count);
   for (int rank = 0; rank < triangle_count; ++rank) rank_of_triangle[triangle_of_rank[rank]] = rank;
+  // Sites touching the outside: at first the hull sites, including those inside hull edges.
+  std::vector<std::uint8_t> on_boundary(dv.on_hull.begin(), dv.on_hull.end());
+  // Whether a pop of the triangle could remove it. One that fails rule a (dangling), rule b
+  // (junction) or has its circumcentre inside it (rule c) fails it at every later pop too:
+  // boundary edges and boundary sites only ever increase, and the circumcentre is fixed. Its
+  // pop would change nothing, so it is not queued.
+  auto removable = [&](const TriangleState& s) {
+    return one_edge(s.boundary_edges) && s.first_exit != kCircumcentreInside &&
+           !on_boundary[s.corners[std::countr_zero(s.boundary_edges)]];
+  };
+  RankQueue queue(triangle_of_rank);
   const auto state_storage = std::make_unique_for_overwrite<TriangleState[]>(triangle_count);  // all written below
   const std::span<TriangleState> state(state_storage.get(), triangle_count);
   for (int t = 0; t < triangle_count; ++t) {
@@ -466,21 +477,7 @@ std::vector<std::uint8_t> shape_hull_triangles(const DelaunayVoronoi& dv) {
     for (int i = 0; i < 3; ++i) s.boundary_edges |= (s.neighbors[i] == kInfinite) << i;
     s.first_exit = first_exit_corner(dv, t);
     s.kept = true;
-  }
-  // Sites touching the outside: at first the hull sites, including those inside hull edges.
-  std::vector<std::uint8_t> on_boundary(dv.on_hull.begin(), dv.on_hull.end());
-
-  // Whether a pop of the triangle could remove it. One that fails rule a (dangling), rule b
-  // (junction) or has its circumcentre inside it (rule c) fails it at every later pop too:
-  // boundary edges and boundary sites only ever increase, and the circumcentre is fixed. Its
-  // pop would change nothing, so it is not queued.
-  auto removable = [&](const TriangleState& s) {
-    return one_edge(s.boundary_edges) && s.first_exit != kCircumcentreInside &&
-           !on_boundary[s.corners[std::countr_zero(s.boundary_edges)]];
-  };
-  RankQueue queue(triangle_of_rank);
-  for (int t = 0; t < triangle_count; ++t) {  // spec step 1: each triangle with a hull edge, once
-    if (state[t].boundary_edges && removable(state[t])) queue.push(state[t].rank, t);
+    if (s.boundary_edges && removable(s)) queue.push(s.rank, t);  // spec step 1: each triangle with a hull edge, once
   }
 
   // The pops announced and not yet popped, in rank order. A decision is a chain of loads that

@@ -5,11 +5,15 @@
 // site, every Gabriel edge kept in the shape-hull graph.
 #include <gtest/gtest.h>
 
+#include <CGAL/Exact_rational.h>
+
 #include <algorithm>
 #include <map>
 #include <numbers>
+#include <queue>
 #include <random>
 #include <set>
+#include <utility>
 
 #include "shape-hull/shape_hull_edges.h"
 #include "shape-hull/shape_hull_triangles.h"
@@ -174,6 +178,108 @@ TEST(ShapeHull, EdgesAreTheBoundaryOfTheKeptTrianglesInSortedOrder) {
     ASSERT_GT(expected.size(), 100u);
     EXPECT_EQ(shape_hull_edges(dv), expected);
   }
+}
+
+// Spec section 2 taken literally, for comparison with the optimised sculpting: a binary heap
+// of (radius, triangle) entries (ties: smaller index first, as documented), the rules
+// tested in the spec's order at every pop, and the walk of step 2c in exact rational
+// arithmetic from the exact centroid to the exact circumcentre: in each triangle, inside if
+// the circumcentre is in the closed triangle, else across the edge that runs from a corner
+// right of the segment's line to one left of it (a corner on the line counts as left).
+std::vector<std::uint8_t> reference_sculpting(const DelaunayVoronoi& dv) {
+  using Rational = CGAL::Exact_rational;
+  struct Exact {
+    Rational x, y;
+  };
+  auto exact = [&](int site) { return Exact{dv.sites[site].x, dv.sites[site].y}; };
+  auto orientation = [](const Exact& a, const Exact& b, const Exact& c) {
+    return CGAL::sign((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  };
+  const int count = dv.triangle_count();
+  std::vector<std::uint8_t> kept(count, 1), on_boundary(dv.on_hull.begin(), dv.on_hull.end());
+  auto outside_across = [&](int t, int corner) { return dv.neighbors[t][corner] == kInfinite || !kept[dv.neighbors[t][corner]]; };
+  auto circumcentre_outside = [&](int t) {
+    const auto& tri = dv.triangles[t];
+    const Exact a = exact(tri[0]), b = exact(tri[1]), c = exact(tri[2]);
+    const Exact centroid{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
+    const Rational bx = b.x - a.x, by = b.y - a.y, cx = c.x - a.x, cy = c.y - a.y;
+    const Rational d = 2 * (bx * cy - by * cx), b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    const Exact centre{a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d};
+    for (int current = t;;) {
+      const auto& corners = dv.triangles[current];
+      bool inside = true;
+      for (int i = 0; i < 3; ++i) inside = inside && orientation(exact(corners[(i + 1) % 3]), exact(corners[(i + 2) % 3]), centre) >= 0;
+      if (inside) return false;
+      int exit_corner = -1;
+      for (int i = 0; i < 3; ++i) {
+        const bool from_left = orientation(centroid, centre, exact(corners[(i + 1) % 3])) >= 0;
+        const bool to_left = orientation(centroid, centre, exact(corners[(i + 2) % 3])) >= 0;
+        if (!from_left && to_left) exit_corner = i;
+      }
+      if (outside_across(current, exit_corner)) return true;
+      current = dv.neighbors[current][exit_corner];
+    }
+  };
+  std::priority_queue<std::pair<double, int>> queue;  // (radius, -triangle): largest radius first
+  for (int t = 0; t < count; ++t) {
+    if (outside_across(t, 0) || outside_across(t, 1) || outside_across(t, 2)) queue.push({dv.circumradii[t], -t});
+  }
+  while (!queue.empty()) {
+    const int t = -queue.top().second;
+    queue.pop();
+    const bool outside = circumcentre_outside(t);
+    int boundary_edges = 0, boundary_corner = 0;
+    for (int i = 0; i < 3; ++i) {
+      if (outside_across(t, i)) ++boundary_edges, boundary_corner = i;
+    }
+    const int apex = dv.triangles[t][boundary_corner];
+    if (!outside || boundary_edges != 1 || on_boundary[apex]) continue;
+    kept[t] = 0;
+    on_boundary[apex] = 1;
+    for (int i = 0; i < 3; ++i) {
+      if (i != boundary_corner) queue.push({dv.circumradii[dv.neighbors[t][i]], -dv.neighbors[t][i]});
+    }
+  }
+  return kept;
+}
+
+// The optimised sculpting (radix-sorted ranks, a swept bit queue, filtered predicates,
+// precomputed first crossings, pops left out of the queue when they could only keep) keeps
+// exactly the triangles the plain reference keeps, on inputs with many ties and right angles
+// (grids), near-duplicates (clusters), noise bands and open arcs.
+TEST(ShapeHull, SculptingKeepsWhatAPlainReferenceKeeps) {
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::normal_distribution<double> gaussian(0, 1);
+  int compared = 0, removed = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    const int n = 20 + static_cast<int>(rng() % 400);
+    std::vector<Point2> points;
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * std::numbers::pi * unit(rng);
+      switch (trial % 5) {
+        case 0: points.push_back({unit(rng), unit(rng)}); break;
+        case 1: points.push_back({std::floor(12 * unit(rng)), std::floor(12 * unit(rng))}); break;
+        case 2: points.push_back(Point2{std::floor(4 * unit(rng)), std::floor(3 * unit(rng))} + 0.05 * Point2{gaussian(rng), gaussian(rng)}); break;
+        case 3: {
+          const double r = 1 + 0.3 * std::cos(5 * angle) + 0.02 * gaussian(rng);
+          points.push_back({r * std::cos(angle), r * std::sin(angle)});
+          break;
+        }
+        default: {
+          const double r = 1 + 0.1 * unit(rng);
+          points.push_back({r * std::cos(angle / 2), r * std::sin(angle / 2)});
+        }
+      }
+    }
+    const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+    const auto expected = reference_sculpting(dv);
+    EXPECT_EQ(shape_hull_triangles(dv), expected) << "trial " << trial;
+    ++compared;
+    removed += static_cast<int>(std::count(expected.begin(), expected.end(), 0));
+  }
+  EXPECT_EQ(compared, 60);
+  EXPECT_GT(removed, 1000);  // the sculpting had work to do
 }
 
 TEST(ShapeHull, AlwaysOneSimpleClosedPolygonThroughTheHull) {

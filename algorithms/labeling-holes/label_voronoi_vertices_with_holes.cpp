@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "labeling-holes/curve_edges_per_sample.h"
 #include "labeling-holes/enclosed_samples.h"
 #include "labeling-holes/relabel_bridging_ears.h"
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
@@ -136,8 +137,10 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     }
     enclosed = samples_enclosed_by_region(dv, region);
   }
-  relabel_bridging_ears(dv, labels.inner);
-  relabel_inner_vertices_outside_the_hull(dv, labels.inner);
+  // One count of curve edges serves both repairs unless the first changes the labels.
+  std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);
+  if (relabel_bridging_ears(dv, labels.inner, curve_edges) > 0) curve_edges = curve_edges_per_sample(dv, labels.inner);
+  relabel_inner_vertices_outside_the_hull(dv, labels.inner, curve_edges);
   return labels;
 }
 

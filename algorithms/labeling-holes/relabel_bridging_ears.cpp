@@ -20,9 +20,9 @@ int corner_of(const DelaunayVoronoi& dv, int triangle, int site) {
 
 }  // namespace
 
-int relabel_bridging_ears(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner) {
+int relabel_bridging_ears(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                          const std::vector<int>& curve_edges) {
   auto is_inner = [&](int t) { return t != kInfinite && inner[t] != 0; };
-  const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
   // Relabelling ears only takes edges away, so a sample with fewer than two stays so.
   bool manifold = true;
   for (int count : curve_edges) {

@@ -30,7 +30,8 @@
 // labels are kept.
 //
 // In:  Delaunay/Voronoi arrays; `inner`, per triangle, 1 for inner (the infinite vertex is
-//      outer), as label_voronoi_vertices_with_holes leaves it.
+//      outer), as label_voronoi_vertices_with_holes leaves it; `curve_edges`, its counts per
+//      sample (curve_edges_per_sample.h), which the caller passes on to the next step.
 // Out: `inner` with those ears set to 0, all decided on the labels as they come in; returns
 //      how many were relabelled (0 when the labels are manifold already, or stay non-manifold).
 #pragma once
@@ -42,6 +43,7 @@
 
 namespace curvebench {
 
-int relabel_bridging_ears(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner);
+int relabel_bridging_ears(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                          const std::vector<int>& curve_edges);
 
 }  // namespace curvebench

@@ -20,7 +20,8 @@
 // triangles.
 //
 // In:  Delaunay/Voronoi arrays (dimension 2); `inner`, per triangle, 1 for inner (the infinite
-//      vertex is outer), as the labels are after relabel_bridging_ears.
+//      vertex is outer), as the labels are after relabel_bridging_ears; `curve_edges`, their
+//      counts per sample (curve_edges_per_sample.h).
 // Out: `inner` with those vertices set to 0, or as it came; returns how many were relabelled.
 #pragma once
 
@@ -31,6 +32,7 @@
 
 namespace curvebench {
 
-int relabel_inner_vertices_outside_the_hull(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner);
+int relabel_inner_vertices_outside_the_hull(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                                            const std::vector<int>& curve_edges);
 
 }  // namespace curvebench

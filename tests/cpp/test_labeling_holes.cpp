@@ -19,6 +19,7 @@
 #include "generators/random.h"
 #include "labeling-holes/enclosed_samples.h"
 #include "labeling-holes/label_voronoi_vertices_with_holes.h"
+#include "labeling-holes/curve_edges_per_sample.h"
 #include "labeling-holes/relabel_bridging_ears.h"
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
 #include "labeling/label_voronoi_vertices.h"
@@ -140,7 +141,7 @@ TEST(LabelingHoles, OfTwoEarsAtOneSampleTheBridgeIsRelabelledAndTheTipKept) {
   const DelaunayVoronoi dv = build_delaunay_voronoi(input.points);
   VoronoiLabels labels = label_voronoi_vertices(dv);
   const std::vector<std::uint8_t> paper = labels.inner;
-  EXPECT_EQ(relabel_bridging_ears(dv, labels.inner), 1);
+  EXPECT_EQ(relabel_bridging_ears(dv, labels.inner, curve_edges_per_sample(dv, labels.inner)), 1);
   for (int t = 0; t < dv.triangle_count(); ++t) {
     if (labels.inner[t] == paper[t]) continue;
     std::vector<int> corners;
@@ -165,7 +166,7 @@ TEST(LabelingHoles, NoEarIsRelabelledInThePapersRightLabelsOrItsFilledHoles) {
   for (std::size_t i = 0; i < inputs.size(); ++i) {
     const DelaunayVoronoi dv = build_delaunay_voronoi(inputs[i]);
     VoronoiLabels labels = label_voronoi_vertices(dv);
-    EXPECT_EQ(relabel_bridging_ears(dv, labels.inner), 0) << "input " << i;
+    EXPECT_EQ(relabel_bridging_ears(dv, labels.inner, curve_edges_per_sample(dv, labels.inner)), 0) << "input " << i;
   }
 }
 
@@ -272,7 +273,7 @@ TEST(LabelingHoles, InnerVerticesOutsideTheHullStayWhereRelabellingThemBreaksThe
     for (int t = 0; t < dv.triangle_count(); ++t) outside += labels.inner[t] && !in_convex_hull(dv, dv.circumcenters[t], wedge);
     EXPECT_GT(outside, 0) << count << " points";
     const std::vector<std::uint8_t> before = labels.inner;
-    EXPECT_EQ(relabel_inner_vertices_outside_the_hull(dv, labels.inner), 0) << count << " points";
+    EXPECT_EQ(relabel_inner_vertices_outside_the_hull(dv, labels.inner, curve_edges_per_sample(dv, labels.inner)), 0) << count << " points";
     EXPECT_EQ(labels.inner, before) << count << " points";
   }
 }

@@ -16,6 +16,8 @@
 #include <tuple>
 #include <utility>
 
+#include "voronoi/sort_by_decreasing_circumradius.h"
+
 namespace curvebench {
 namespace {
 
@@ -329,54 +331,12 @@ class WalkRehearsal {
 
 // The order of spec step 1: the triangles by decreasing circumradius. The reference leaves
 // equal radii in heap order; here the smaller triangle index goes first, so that the result
-// is deterministic. Radii are the layer's rounded ones, as the reference's are its own
-// rounded ones. A stable least-significant-digit radix sort on the radius's bits, from
-// triangles in index order: non-negative doubles order like their bit patterns, and
-// complemented the largest comes first.
+// is deterministic (a stable sort of the triangles in index order). Radii are the layer's
+// rounded ones, as the reference's are its own rounded ones.
 std::vector<int> triangles_by_decreasing_circumradius(const DelaunayVoronoi& dv) {
-  struct Keyed {
-    std::uint64_t key;
-    int triangle;
-  };
-  const int count = dv.triangle_count();
-  auto key_of = [&](int t) { return ~std::bit_cast<std::uint64_t>(dv.circumradii[t]); };
-  constexpr int kDigitBits = 16, kDigits = 64 / kDigitBits;
-  constexpr std::uint64_t kDigitMask = (std::uint64_t{1} << kDigitBits) - 1;
-  // Every digit's counts in one pass over the radii.
-  std::vector<int> counts(kDigits << kDigitBits, 0);
-  for (int t = 0; t < count; ++t) {
-    const std::uint64_t key = key_of(t);
-    for (int digit = 0; digit < kDigits; ++digit) ++counts[(digit << kDigitBits) + ((key >> (digit * kDigitBits)) & kDigitMask)];
-  }
-  // Radii of one scale share their sign and exponent bits: such a digit moves nothing.
-  std::vector<int> digits;
-  for (int digit = 0; digit < kDigits; ++digit) {
-    const auto first = counts.begin() + (digit << kDigitBits);
-    if (*std::max_element(first, first + (1 << kDigitBits)) != count) digits.push_back(digit);
-  }
-  // The first pass reads the triangles in index order straight from the radii, the last
-  // writes only their indices.
-  // Allocated without zero-filling: every element is written before it is read.
-  std::unique_ptr<Keyed[]> items, buffer;
-  if (digits.size() > 1) items = std::make_unique_for_overwrite<Keyed[]>(count), buffer = std::make_unique_for_overwrite<Keyed[]>(count);
-  std::vector<int> order(count);
-  if (digits.empty()) std::iota(order.begin(), order.end(), 0);
-  for (std::size_t pass = 0; pass < digits.size(); ++pass) {
-    const int shift = digits[pass] * kDigitBits;
-    int* next = counts.data() + (digits[pass] << kDigitBits);
-    std::exclusive_scan(next, next + (1 << kDigitBits), next, 0);
-    const bool first = pass == 0, last = pass + 1 == digits.size();
-    for (int i = 0; i < count; ++i) {
-      const Keyed item = first ? Keyed{key_of(i), i} : items[i];
-      const int position = next[(item.key >> shift) & kDigitMask]++;
-      if (last) {
-        order[position] = item.triangle;
-      } else {
-        buffer[position] = item;
-      }
-    }
-    items.swap(buffer);
-  }
+  std::vector<int> order(dv.triangle_count());
+  std::iota(order.begin(), order.end(), 0);
+  sort_by_decreasing_circumradius(dv, order);
   return order;
 }
 

@@ -10,11 +10,6 @@
 namespace curvebench {
 namespace {
 
-double squared_distance(Point2 a, Point2 b) {
-  const double dx = a.x - b.x, dy = a.y - b.y;
-  return dx * dx + dy * dy;
-}
-
 struct PointCloud {
   std::span<const Point2> points;
   std::size_t kdtree_get_point_count() const { return points.size(); }

@@ -20,6 +20,8 @@ inline double dot(Point2 a, Point2 b) { return a.x * b.x + a.y * b.y; }
 inline double cross(Point2 a, Point2 b) { return a.x * b.y - a.y * b.x; }
 inline double norm(Point2 a) { return std::hypot(a.x, a.y); }
 inline double distance(Point2 a, Point2 b) { return norm(a - b); }
+// The squared distance, for comparing distances without square roots.
+inline double squared_distance(Point2 a, Point2 b) { return dot(a - b, a - b); }
 
 // The point of segment ab closest to p (a itself when the segment is a point).
 inline Point2 closest_point_on_segment(Point2 p, Point2 a, Point2 b) {

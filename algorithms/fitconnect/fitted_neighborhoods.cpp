@@ -81,11 +81,6 @@ class Marks {
 
 Point2 unit(Point2 v) { return (1.0 / norm(v)) * v; }
 
-double squared_distance(Point2 a, Point2 b) {
-  const Point2 d = a - b;
-  return d.x * d.x + d.y * d.y;
-}
-
 // Closed segments ab and cd meet; parallel (or degenerate) pairs count as meeting, as in the
 // authors' corner test (spec 2.6 step 5).
 bool segments_meet(Point2 a, Point2 b, Point2 c, Point2 d) {

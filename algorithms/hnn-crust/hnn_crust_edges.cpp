@@ -16,8 +16,6 @@ namespace {
 // one and the result is the same as querying k_max at once.
 constexpr int kFirstQuery = 4;
 
-double squared_distance(Point2 a, Point2 b) { return dot(a - b, a - b); }
-
 // Sites are scaled so that the largest coordinate magnitude lies in [2^(kScale-1), 2^kScale).
 // Squared distances then stay below 2^1006 (no overflow, which raw coordinates beyond ~1e154
 // would cause), and distinct sites keep a nonzero squared distance down to separations of

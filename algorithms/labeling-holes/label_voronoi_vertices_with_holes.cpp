@@ -16,10 +16,11 @@ namespace {
 // The vertices of the parts of `region` the walk did not keep that lie across missed closed
 // curves, each once, in no particular order. A part is grown through the Voronoi edges
 // between unkept vertices all three of whose samples are enclosed; its boundary is the
-// Delaunay edges dual to the Voronoi edges leaving it. A part is taken when its boundary is a set of closed curves
-// through enclosed samples (every one of its samples has two boundary edges). Such a part is
-// cut off by samples that no walk reached, and its new curve edges leave every curve the
-// paper found as it was (the part meets no outer vertex: the frontier is kept).
+// Delaunay edges dual to the Voronoi edges leaving it. A part is taken when its boundary is a
+// set of closed curves through enclosed samples (every one of its samples has two boundary
+// edges). Such a part is cut off by samples that no walk reached, and its new curve edges
+// leave every curve the paper found as it was (the part meets no outer vertex: the frontier
+// is kept).
 //
 // A pinched part is one whose boundary also faces unkept vertices left out of it for
 // touching a found sample. Where a sparse missed curve passes within one Delaunay triangle of
@@ -125,7 +126,8 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     enclosed = samples_enclosed_by_region(dv, labels.inner);
   }
   // Without enclosed samples the paper's walks reached every sample's curve.
-  std::vector<std::uint8_t> region = labels.inner;
+  std::vector<std::uint8_t> region;
+  if (!enclosed.empty()) region = labels.inner;
   while (!enclosed.empty()) {
     const std::vector<std::uint8_t> kept = walk_region_from_its_boundary(dv, region);
     const std::vector<int> flipped = parts_across_missed_curves(dv, region, kept, enclosed);

@@ -3,15 +3,8 @@
 #include <algorithm>
 #include <limits>
 
-#include "labeling-holes/curve_edges_per_sample.h"
-
 namespace curvebench {
 namespace {
-
-double squared_distance(Point2 a, Point2 b) {
-  const double dx = a.x - b.x, dy = a.y - b.y;
-  return dx * dx + dy * dy;
-}
 
 int corner_of(const DelaunayVoronoi& dv, int triangle, int site) {
   const auto& tri = dv.triangles[triangle];

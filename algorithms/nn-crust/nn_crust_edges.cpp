@@ -5,8 +5,6 @@
 namespace curvebench {
 namespace {
 
-double squared_distance(Point2 a, Point2 b) { return dot(a - b, a - b); }
-
 // Keeps (site, squared distance) if it is nearer than the current best, ties to the smaller
 // site. The first candidate is always kept: a squared distance can overflow to infinity
 // (coordinates beyond 1e154), and every site must still get a nearest neighbour.

@@ -17,8 +17,6 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-double squared_distance(Point2 a, Point2 b) { return dot(a - b, a - b); }
-
 // The authors visit CGAL's finite vertices, which after range insertion come in insertion
 // order: the input order shuffled with CGAL's fixed seed, then sorted along Hilbert curves
 // (spatial_sort). The same sort of the sites, in order of first occurrence, gives that order

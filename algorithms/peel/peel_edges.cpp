@@ -9,8 +9,6 @@ namespace {
 
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
-double squared_distance(Point2 a, Point2 b) { return dot(a - b, a - b); }
-
 // An edge of the curve as the authors store it: oriented (the orientation matters only to the
 // reference degree test), plus the Delaunay edge it is, to mark it taken (see delaunay_edge_id).
 struct CurveEdge {

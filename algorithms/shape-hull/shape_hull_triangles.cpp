@@ -292,7 +292,6 @@ class WalkRehearsal {
  private:
   enum class Stage : std::uint8_t { kWait, kStart, kEntered, kSiteRequested, kDone };
 
-  static double cross(Point2 u, Point2 v) { return u.x * v.y - u.y * v.x; }
   bool left_of_segment(Point2 site) const { return cross(to_ - from_, site - from_) >= 0; }
 
   // The walk reached the outside, so the triangle is likely removed at its pop. Its

@@ -50,8 +50,11 @@ void NearestNeighbors::k_nearest(Point2 query, int k, std::vector<int>& out) con
   // One more than asked: if the last two tie, the tree's choice among equally distant points
   // at the boundary is arbitrary, so every point at that distance is gathered and ordered.
   const int asked = std::min(wanted + 1, size());
-  std::vector<unsigned> found(asked);
-  std::vector<double> squared(asked);
+  // Scratch kept per thread: the queries of an algorithm's inner loop allocate nothing.
+  thread_local std::vector<unsigned> found;
+  thread_local std::vector<double> squared;
+  found.resize(asked);
+  squared.resize(asked);
   const double q[2] = {query.x, query.y};
   const std::size_t count = tree_->index.knnSearch(q, asked, found.data(), squared.data());
   out.assign(found.begin(), found.begin() + count);

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -61,6 +60,25 @@ class OpenSet {
   int cursor_;
 };
 
+// The affected set of spec 2.6 step 6, a sorted vector (it holds a handful of points).
+class AffectedSet {
+ public:
+  bool empty() const { return points_.empty(); }
+  int first() const { return points_.front(); }
+  void insert(int i) {
+    const auto at = std::lower_bound(points_.begin(), points_.end(), i);
+    if (at == points_.end() || *at != i) points_.insert(at, i);
+  }
+  // Removes member i and returns the next larger member, or -1.
+  int erase_and_next(int i) {
+    const auto at = points_.erase(std::lower_bound(points_.begin(), points_.end(), i));
+    return at == points_.end() ? -1 : *at;
+  }
+
+ private:
+  std::vector<int> points_;
+};
+
 // A reusable membership set over point indices: O(1) clear by bumping a stamp.
 class Marks {
  public:
@@ -79,7 +97,13 @@ class Marks {
   std::uint32_t current_ = 0;
 };
 
-Point2 unit(Point2 v) { return (1.0 / norm(v)) * v; }
+// |v| by a square root where the sum of squares is safely in range, else by std::hypot: the
+// same value up to the last bit, at a fraction of hypot's cost on the hot path.
+double length(Point2 v) {
+  const double squared = dot(v, v);
+  return squared > 1e-290 && squared < 1e290 ? std::sqrt(squared) : norm(v);
+}
+Point2 unit(Point2 v) { return (1.0 / length(v)) * v; }
 
 // Closed segments ab and cd meet; parallel (or degenerate) pairs count as meeting, as in the
 // authors' corner test (spec 2.6 step 5).
@@ -295,7 +319,9 @@ class FitConnect {
     const FittedCircle circle = hyper_circle_fit(fit_points_);
     out_.centers[i] = circle.center;
     out_.radii[i] = circle.radius;
-    out_.normals[i] = unit(p_[i] - circle.center);
+    // The normal by std::hypot: StretchDenoise moves vertices along it, bit for bit as before.
+    const Point2 radial = p_[i] - circle.center;
+    out_.normals[i] = (1.0 / norm(radial)) * radial;
 
     std::vector<int>& s = out_.neighborhoods[i];
     int& split = out_.side0_sizes[i];
@@ -326,8 +352,9 @@ class FitConnect {
     if (split > 0 && split < k) {
       auto project = [&](int q) { return circle.center + circle.radius * unit(p_[q] - circle.center); };
       const Point2 own = project(i), end0 = project(side(i, 0).back()), end1 = project(side(i, 1).back());
-      const double span = distance(end0, end1);
-      conform = span > distance(own, end0) && span > distance(own, end1);
+      // Compared squared: the same order as the distances, without their square roots.
+      const double span = squared_distance(end0, end1);
+      conform = span > squared_distance(own, end0) && span > squared_distance(own, end1);
     }
     state_[i] = conform ? State::Conform : State::Nonconform;
   }
@@ -390,7 +417,7 @@ class FitConnect {
   std::vector<State>& state_ = out_.states;
   std::vector<std::array<int, 2>>& link_ = out_.links;
   OpenSet open_;
-  std::set<int> affected_;
+  AffectedSet affected_;
   Marks side_marks_, chain_marks_, other_marks_;
   std::vector<int> knn_buffer_, scratch_, saved_neighborhood_;
   std::vector<Point2> fit_points_;
@@ -645,7 +672,7 @@ bool FitConnect::is_sharp(int p, const std::array<std::array<int, 2>, 2>& segmen
   const Point2 c = p_[p];
   double rho = 0.0;
   for (int t = 0; t < 2; ++t)
-    for (int q : side(p, t)) rho = std::max(rho, distance(p_[q], c));
+    for (int q : side(p, t)) rho = std::max(rho, length(p_[q] - c));
   double angle[2];
   for (int k = 0; k < 2; ++k) {
     const int e = segments[k][1];
@@ -700,15 +727,17 @@ bool FitConnect::consistent(int q) {
 }
 
 void FitConnect::propagate() {
+  // The sweep's cursor is the successor the removed point had when it was removed, as an
+  // iterator into the authors' ordered set: points inserted between the two are visited by
+  // the next sweep, points above the cursor by this one.
   while (!affected_.empty()) {
-    auto it = affected_.begin();
-    while (it != affected_.end()) {
-      const int q = *it;
-      it = affected_.erase(it);
+    for (int q = affected_.first(); q != kNone;) {
+      const int next = affected_.erase_and_next(q);
       std::vector<int>& refs = refs_[q];
       std::sort(refs.begin(), refs.end());  // Ref(q) is visited ascending
       for (int r : refs)
         if (link_count(r) > 0 && !consistent(r)) drop_all(r);
+      q = next;
     }
   }
 }

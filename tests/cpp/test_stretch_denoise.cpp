@@ -6,11 +6,17 @@
 #include <numbers>
 #include <numeric>
 #include <random>
+#include <limits>
 #include <set>
+#include <string>
 #include <vector>
 
-#include "stretchdenoise/denoise_along_normals.h"
+#include "fitconnect/fitconnect.h"
 #include "fitconnect/fitted_neighborhoods.h"
+#include "generators/generate.h"
+#include "metrics/distance_to_curve.h"
+#include "metrics/true_curve_segments.h"
+#include "stretchdenoise/denoise_along_normals.h"
 #include "stretchdenoise/stretch_denoise.h"
 #include "test_support.h"
 
@@ -183,6 +189,63 @@ TEST(StretchDenoise, DenoisingBringsVerticesCloserAtFivePercentNoise) {
 
 TEST(StretchDenoise, DenoisingBringsVerticesCloserAtTenPercentNoise) {
   for (unsigned seed : {1u, 2u, 3u}) expect_closer_after_denoising(30, 0.1, seed);
+}
+
+// Mean distance from the ends of `edges`, at `positions`, to the true curves.
+double mean_vertex_distance(const std::vector<Segment2>& curve, const std::vector<Point2>& positions,
+                            const std::vector<Edge>& edges) {
+  std::vector<char> on_curve(positions.size(), 0);
+  for (const Edge& e : edges) on_curve[e[0]] = on_curve[e[1]] = 1;
+  std::vector<Point2> vertices;
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (on_curve[i]) vertices.push_back(positions[i]);
+  return distance_to_curve(curve, vertices).mean;
+}
+
+// The case: epsilon-samples of the smooth families, moved along the normal uniformly in
+// a band of half-width `band` times the local feature size. Given the band as its noise extent
+// (a sensor model; the smallest band of any sample, so that no extent exceeds its sample's),
+// StretchDenoise brings the vertices markedly closer to the true curve. With extents estimated
+// from pass 1 (the default) most samples are frozen (a 3-point fit interpolates, spec 2.4), and
+// neither it nor FitConnect's blend may move the vertices farther from the curve on average.
+void expect_denoising_on_smooth_families(double band) {
+  for (const std::string family : {"circle", "ellipse", "superellipse", "rose", "random", "dumbbell"}) {
+    for (std::uint64_t seed : {1u, 2u}) {
+      GeneratorSettings settings;
+      settings.family = family;
+      settings.epsilon = 0.1;
+      settings.noise = band;
+      settings.noise_model = "uniform";
+      settings.seed = seed;
+      settings.dense = 2048;
+      const GeneratedInput input = generate(settings);
+      const std::vector<Segment2> curve = true_curve_segments(input.truth);
+      double smallest_lfs = std::numeric_limits<double>::infinity();
+      for (const GroundTruthSample& sample : input.truth.samples) smallest_lfs = std::min(smallest_lfs, sample.lfs);
+      const std::string which = family + " seed " + std::to_string(seed) + " band " + std::to_string(band);
+
+      const DenoisedCurve given = stretch_denoise(input.points, band * smallest_lfs);
+      const double before = mean_vertex_distance(curve, input.points, given.edges);
+      EXPECT_LT(mean_vertex_distance(curve, given.positions, given.edges), 0.85 * before) << which;
+
+      const DenoisedCurve estimated = stretch_denoise(input.points);
+      EXPECT_LE(mean_vertex_distance(curve, estimated.positions, estimated.edges),
+                mean_vertex_distance(curve, input.points, estimated.edges) * (1 + 1e-9))
+          << which;
+      const DenoisedCurve blended = fitconnect(input.points);
+      EXPECT_LE(mean_vertex_distance(curve, blended.positions, blended.edges),
+                mean_vertex_distance(curve, input.points, blended.edges) * (1 + 1e-9))
+          << which;
+    }
+  }
+}
+
+TEST(StretchDenoise, DenoisingBringsEpsilonSamplesOfSmoothFamiliesCloserAtFivePercentOfLfs) {
+  expect_denoising_on_smooth_families(0.05);
+}
+
+TEST(StretchDenoise, DenoisingBringsEpsilonSamplesOfSmoothFamiliesCloserAtTenPercentOfLfs) {
+  expect_denoising_on_smooth_families(0.1);
 }
 
 }  // namespace

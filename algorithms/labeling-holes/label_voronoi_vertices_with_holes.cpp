@@ -6,6 +6,7 @@
 
 #include "labeling-holes/curve_edges_per_sample.h"
 #include "labeling-holes/enclosed_samples.h"
+#include "labeling-holes/missed_curves_stand_apart.h"
 #include "labeling-holes/relabel_bridging_ears.h"
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
 #include "labeling-holes/walk_region_from_its_boundary.h"
@@ -84,7 +85,7 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
       for (int site : e) closed = closed && enclosed[site] && boundary_degree[site] == 2;
     }
     for (const Edge& e : boundary) boundary_degree[e[0]] = boundary_degree[e[1]] = 0;
-    if (!closed) return Boundary::other;
+    if (!closed || !missed_curves_stand_apart(dv, boundary)) return Boundary::other;
     return pinched ? Boundary::pinched_missed_closed_curves : Boundary::missed_closed_curves;
   };
 

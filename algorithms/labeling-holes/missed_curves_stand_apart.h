@@ -1,0 +1,29 @@
+// Whether the closed curves a region walk found through missed samples stand apart from the
+// other samples, as the curves of an epsilon-sample do, or join samples that belong elsewhere.
+//
+// On an epsilon-sample, both curve edges at a sample s are at most 2 epsilon / (1 - epsilon)
+// lfs(s) long (Definition 4), while a sample of another curve lies beyond the medial axis that
+// separates the two curves, at least lfs(s) away. So for epsilon < 1/3 every sample of a
+// hole's curve stands apart: both its edges on the curve are shorter than each Delaunay edge
+// from it to a sample off the curve. Where the paper closed pockets off at their mouths (the
+// tips of a sparse star, the slots of a sparse outline), the samples down their walls keep
+// all-inner cells, and the walk can join samples of two pockets into a small closed "hole"
+// whose edges are longer than the way from most of its samples back to their own walls.
+// Random sampling leaves a few large gaps on a true hole too (a glyph's counter at a few
+// hundred samples), so a curve is taken when most of its samples stand apart: more than half.
+//
+// In:  Delaunay/Voronoi arrays; `curves`, the Delaunay edges of one part's boundary, every
+//      sample on them with exactly two.
+// Out: true if more than half of the samples on them stand apart: the longer of the sample's
+//      two edges on them is shorter than every Delaunay edge from it to a sample not on them.
+#pragma once
+
+#include <vector>
+
+#include "voronoi/delaunay_voronoi.h"
+
+namespace curvebench {
+
+bool missed_curves_stand_apart(const DelaunayVoronoi& dv, const std::vector<Edge>& curves);
+
+}  // namespace curvebench

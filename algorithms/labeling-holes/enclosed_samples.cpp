@@ -1,17 +1,32 @@
 #include "labeling-holes/enclosed_samples.h"
 
+#include <algorithm>
+
 namespace curvebench {
 
-std::vector<int> samples_enclosed_by_region(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region) {
-  std::vector<std::uint8_t> touches_outside(dv.on_hull.begin(), dv.on_hull.end());
-  for (int t = 0; t < dv.triangle_count(); ++t) {
-    if (region[t]) continue;
-    for (int site : dv.triangles[t]) touches_outside[site] = 1;
-  }
+std::vector<int> samples_enclosed_by_region(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region,
+                                            std::span<const int> region_vertices) {
+  // A sample with no vertex in the region is not enclosed, so the candidates are the samples
+  // of the region's vertices; each one's cell is walked once.
+  std::vector<std::uint8_t> looked_at(dv.site_count(), 0);
   std::vector<int> enclosed;
-  for (int s = 0; s < dv.site_count(); ++s) {
-    if (!touches_outside[s] && dv.site_triangle[s] >= 0) enclosed.push_back(s);
+  for (int t : region_vertices) {
+    for (int site : dv.triangles[t]) {
+      if (looked_at[site] || dv.on_hull[site]) continue;
+      looked_at[site] = 1;
+      bool inside = true;
+      const int first = dv.site_triangle[site];
+      int cell = first;
+      do {
+        inside = region[cell] != 0;
+        const auto& tri = dv.triangles[cell];
+        const int corner = tri[0] == site ? 0 : (tri[1] == site ? 1 : 2);
+        cell = dv.neighbors[cell][(corner + 1) % 3];  // counter-clockwise around the site
+      } while (inside && cell != first);
+      if (inside) enclosed.push_back(site);
+    }
   }
+  std::sort(enclosed.begin(), enclosed.end());
   return enclosed;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "labeling-holes/curve_edges_per_sample.h"
@@ -35,28 +36,30 @@ namespace {
 // and a pinched part there (a glyph's crossbar inside the closed-off pocket of a `G`) is the
 // walk going astray. A part with a branching boundary keeps the paper's labels too.
 std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& region,
-                                            const std::vector<std::uint8_t>& kept,
-                                            const std::vector<int>& enclosed_samples) {
-  const int triangles = dv.triangle_count();
+                                            const RegionWalk& walk, const std::vector<int>& enclosed_samples) {
   std::vector<int> across;
-  std::vector<std::uint8_t> seen(triangles, 0), enclosed(dv.site_count(), 0);
+  std::vector<std::uint8_t> enclosed(dv.site_count(), 0);
   for (int site : enclosed_samples) enclosed[site] = 1;
+  // Per vertex: whether it belongs to a part, found once for the unkept vertices, and whether
+  // a part has grown through it, so that growing reads one byte per neighbour.
+  enum : std::uint8_t { kInAPart = 1, kSeen = 2 };
+  std::vector<std::uint8_t> part_state(dv.triangle_count(), 0);
+  for (int t : walk.unkept) {
+    const auto& tri = dv.triangles[t];
+    if (enclosed[tri[0]] && enclosed[tri[1]] && enclosed[tri[2]]) part_state[t] = kInAPart;
+  }
   std::vector<int> boundary_degree(dv.site_count(), 0);
   std::vector<int> part, stack;
   std::vector<Edge> boundary;
-  auto unkept = [&](int t) { return t != kInfinite && region[t] && !kept[t]; };
-  auto all_samples_enclosed = [&](int t) {
-    const auto& tri = dv.triangles[t];
-    return enclosed[tri[0]] && enclosed[tri[1]] && enclosed[tri[2]];
-  };
-  auto in_a_part = [&](int t) { return unkept(t) && all_samples_enclosed(t); };
+  auto unkept = [&](int t) { return t != kInfinite && region[t] && !walk.kept[t]; };
+  auto in_a_part = [&](int t) { return t != kInfinite && part_state[t] != 0; };
 
   bool pinched = false;
   auto grow_part = [&](int start) {
     pinched = false;
     part.clear();
     boundary.clear();
-    seen[start] = 1;
+    part_state[start] |= kSeen;
     stack.push_back(start);
     while (!stack.empty()) {
       const int vertex = stack.back();
@@ -67,8 +70,8 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
         if (!in_a_part(next)) {
           pinched = pinched || unkept(next);
           boundary.push_back({dv.triangles[vertex][(k + 1) % 3], dv.triangles[vertex][(k + 2) % 3]});
-        } else if (!seen[next]) {
-          seen[next] = 1;
+        } else if (!(part_state[next] & kSeen)) {
+          part_state[next] |= kSeen;
           stack.push_back(next);
         }
       }
@@ -91,10 +94,9 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
 
   std::vector<std::uint8_t> on_a_taken_curve(dv.site_count(), 0);
   std::vector<int> pinched_parts;
-  // Every vertex of a part has its three samples enclosed, so a scan of the triangles finds
-  // the same parts as walks around the enclosed samples' cells, in memory order.
-  for (int t = 0; t < triangles; ++t) {
-    if (!in_a_part(t) || seen[t]) continue;
+  // Every vertex of a part is one the walk did not keep, so a scan of those finds every part.
+  for (int t : walk.unkept) {
+    if (part_state[t] != kInAPart) continue;  // in no part, or in one grown already
     grow_part(t);
     const Boundary kind = classify_boundary();
     if (kind != Boundary::other) {
@@ -119,27 +121,43 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   VoronoiLabels labels = label_voronoi_vertices(dv);
   // After the paper's walks, a sample's cell holds an outer vertex exactly when a walk paired
   // the sample: every outer vertex is one a walk kept, keeping it pairs its unpaired samples
-  // (Algorithm 1, lines 1-2), and hull samples are paired with the infinite vertex. So the
-  // paper's enclosed samples are among its unpaired ones, and one pass over the sources
-  // settles the common case, every sample paired, without a pass over the triangles.
+  // (Algorithm 1, lines 1-2), a sample is paired only by a vertex a walk keeps, and hull
+  // samples are paired with the infinite vertex. So the paper's enclosed samples are its
+  // unpaired ones (with a cell), read off the sources without a pass over the triangles.
   std::vector<int> enclosed;
-  if (std::find(labels.source_vertex.begin(), labels.source_vertex.end(), kUnpaired) != labels.source_vertex.end()) {
-    enclosed = samples_enclosed_by_region(dv, labels.inner);
+  for (int s = 0; s < dv.site_count(); ++s) {
+    if (labels.source_vertex[s] == kUnpaired && dv.site_triangle[s] >= 0) enclosed.push_back(s);
   }
   // Without enclosed samples the paper's walks reached every sample's curve.
   std::vector<std::uint8_t> region;
-  if (!enclosed.empty()) region = labels.inner;
+  std::vector<int> region_vertices;
+  if (!enclosed.empty()) {
+    region = labels.inner;
+    region_vertices.resize(dv.triangle_count() - std::count(region.begin(), region.end(), 0) + 1);
+    std::size_t count = 0;
+    for (int t = 0; t < dv.triangle_count(); ++t) {
+      region_vertices[count] = t;  // kept when inner: no branch on the labels' pattern
+      count += region[t] != 0;
+    }
+    region_vertices.resize(count);
+  }
   while (!enclosed.empty()) {
-    const std::vector<std::uint8_t> kept = walk_region_from_its_boundary(dv, region);
-    const std::vector<int> flipped = parts_across_missed_curves(dv, region, kept, enclosed);
+    const RegionWalk walk = walk_region_from_its_boundary(dv, region, region_vertices);
+    std::vector<int> flipped = parts_across_missed_curves(dv, region, walk, enclosed);
     if (flipped.empty()) break;  // no next region, so no evidence in it
-    std::fill(region.begin(), region.end(), 0);
+    for (int t : region_vertices) region[t] = 0;
     for (int t : flipped) {
       region[t] = 1;
       labels.inner[t] ^= 1;
     }
-    enclosed = samples_enclosed_by_region(dv, region);
+    std::sort(flipped.begin(), flipped.end());
+    region_vertices = std::move(flipped);
+    enclosed = samples_enclosed_by_region(dv, region, region_vertices);
   }
+  // The loop stops with evidence left only where no part was taken: those samples' cells lie
+  // in the last region, all of one label, so they have no curve edge, and both repairs below
+  // leave the labels as they are unless every sample has two (steps 6 and 7 of the rule).
+  if (!enclosed.empty()) return labels;
   // One count of curve edges serves both repairs unless the first changes the labels.
   std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);
   if (relabel_bridging_ears(dv, labels.inner, curve_edges) > 0) curve_edges = curve_edges_per_sample(dv, labels.inner);

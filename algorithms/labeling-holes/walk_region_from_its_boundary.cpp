@@ -1,6 +1,7 @@
 #include "labeling-holes/walk_region_from_its_boundary.h"
 
 #include <cstdint>
+#include <utility>
 
 #include "labeling/label_voronoi_vertices.h"
 #include "labeling/side_of_tangent_line.h"
@@ -8,21 +9,19 @@
 
 namespace curvebench {
 
-std::vector<std::uint8_t> walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region) {
-  const int triangles = dv.triangle_count();
+RegionWalk walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region,
+                                         std::span<const int> region_vertices) {
   // One byte of flags per vertex, so that a step of the walk reads one array, not four.
   enum : std::uint8_t { kInRegion = 1, kSeed = 2, kVisited = 4, kKept = 8 };
-  std::vector<std::uint8_t> state(triangles);
+  std::vector<std::uint8_t> state(dv.triangle_count(), 0);
   auto in_region = [&](int t) { return t != kInfinite && region[t]; };
   std::vector<int> seeds;
-  for (int t = 0; t < triangles; ++t) {
-    if (!region[t]) continue;
+  for (int t : region_vertices) {
     const auto& next = dv.neighbors[t];
     const bool frontier = !in_region(next[0]) || !in_region(next[1]) || !in_region(next[2]);
     state[t] = frontier ? kInRegion | kSeed : kInRegion;
     if (frontier) seeds.push_back(t);
   }
-  sort_by_decreasing_circumradius(dv, seeds);  // seeds are in index order: ties by smaller index
 
   std::vector<int> source(dv.site_count(), kUnpaired);
   std::vector<int> stack;
@@ -34,8 +33,9 @@ std::vector<std::uint8_t> walk_region_from_its_boundary(const DelaunayVoronoi& d
     }
     return false;
   };
-  for (int root : seeds) {
-    if (state[root] & kVisited) continue;  // reached by an earlier walk
+  // Seeds in Algorithm 2's order; one reached by an earlier seed's walk starts none of its own.
+  auto reached = [&](int t) { return (state[t] & kVisited) != 0; };
+  for_each_by_decreasing_circumradius(dv, seeds, reached, [&](int root) {
     stack.assign(1, root);
     while (!stack.empty()) {
       const int vertex = stack.back();
@@ -55,9 +55,20 @@ std::vector<std::uint8_t> walk_region_from_its_boundary(const DelaunayVoronoi& d
         if (next != kInfinite && (state[next] & (kInRegion | kVisited)) == kInRegion) stack.push_back(next);
       }
     }
+  }, [&](int root) {
+    // What a root's first step reads: its flags, samples, neighbours and circumcentre.
+    __builtin_prefetch(&state[root]);
+    __builtin_prefetch(&dv.triangles[root]);
+    __builtin_prefetch(&dv.neighbors[root]);
+    __builtin_prefetch(&dv.circumcenters[root]);
+  });
+  RegionWalk walk;
+  for (int t : region_vertices) {
+    if (!(state[t] & kKept)) walk.unkept.push_back(t);
   }
   for (auto& flags : state) flags = (flags & kKept) ? 1 : 0;
-  return state;
+  walk.kept = std::move(state);
+  return walk;
 }
 
 }  // namespace curvebench

@@ -14,10 +14,12 @@
 // one of its samples (Definition 5, tested before pairing) is stopped and ends its branch;
 // the walk never leaves the region.
 //
-// In:  Delaunay/Voronoi arrays; `region[t]` nonzero for the region's vertices.
-// Out: per triangle, 1 for the region vertices the walk reached without stopping (they stay
-//      on the region's side), 0 for the stopped ones, the unreached ones and those outside
-//      the region.
+// In:  Delaunay/Voronoi arrays; `region[t]` nonzero for the region's vertices, and those
+//      vertices listed in ascending order (`region_vertices`), so that a small region (a
+//      nesting level below the first) costs no pass over all triangles.
+// Out: `kept`, per triangle, 1 for the region vertices the walk reached without stopping (they
+//      stay on the region's side), 0 for the stopped ones, the unreached ones and those
+//      outside the region; `unkept`, the region vertices with 0, ascending.
 #pragma once
 
 #include <cstdint>
@@ -28,6 +30,12 @@
 
 namespace curvebench {
 
-std::vector<std::uint8_t> walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region);
+struct RegionWalk {
+  std::vector<std::uint8_t> kept;
+  std::vector<int> unkept;
+};
+
+RegionWalk walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region,
+                                         std::span<const int> region_vertices);
 
 }  // namespace curvebench

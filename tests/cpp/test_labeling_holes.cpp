@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <numeric>
+#include <random>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -359,7 +360,7 @@ TEST(LabelingHoles, HoleCornersAreDominantPoints) {
 }
 
 TEST(LabelingHoles, AfterThePaperTheEnclosedSamplesAreTheUnpairedOnes) {
-  // label_voronoi_vertices_with_holes skips the triangle pass when every sample is paired.
+  // label_voronoi_vertices_with_holes reads the paper's enclosed samples off its sources.
   std::vector<std::vector<Point2>> inputs = {epsilon_sample(nested_curves_scene(2), 0.2, 1).points,
                                              epsilon_sample(holes_scene(3, 3), 0.3, 2).points,
                                              epsilon_sample(rose_scene(1.0, 0.3, 5), 0.4, 3).points,
@@ -373,10 +374,78 @@ TEST(LabelingHoles, AfterThePaperTheEnclosedSamplesAreTheUnpairedOnes) {
     for (int s = 0; s < dv.site_count(); ++s) {
       if (labels.source_vertex[s] == kUnpaired) unpaired.push_back(s);
     }
-    EXPECT_EQ(samples_enclosed_by_region(dv, labels.inner), unpaired);
+    std::vector<int> inner_vertices;
+    for (int t = 0; t < dv.triangle_count(); ++t) {
+      if (labels.inner[t]) inner_vertices.push_back(t);
+    }
+    EXPECT_EQ(samples_enclosed_by_region(dv, labels.inner, inner_vertices), unpaired);
     enclosed_in_all += unpaired.size();
   }
   EXPECT_GT(enclosed_in_all, 0u);  // the holes and the nested curve
+}
+
+// samples_enclosed_by_region looks only at the samples of the region's vertices: the same
+// samples as a pass over every cell, on the paper's inner region and on random regions.
+TEST(LabelingHoles, EnclosedSamplesAreThoseWhoseWholeCellIsInTheRegion) {
+  const DelaunayVoronoi dv = build_delaunay_voronoi(epsilon_sample(holes_scene(3, 3), 0.3, 2).points);
+  std::vector<std::vector<std::uint8_t>> regions = {label_voronoi_vertices(dv).inner};
+  std::mt19937 rng(5);
+  for (double share : {0.5, 0.9, 0.99}) {
+    std::bernoulli_distribution in_region(share);
+    std::vector<std::uint8_t> region(dv.triangle_count());
+    for (auto& flag : region) flag = in_region(rng);
+    regions.push_back(region);
+  }
+  std::size_t enclosed_in_all = 0;
+  for (const auto& region : regions) {
+    std::vector<int> vertices, expected;
+    for (int t = 0; t < dv.triangle_count(); ++t) {
+      if (region[t]) vertices.push_back(t);
+    }
+    for (int s = 0; s < dv.site_count(); ++s) {
+      const std::vector<int> cell = testing::voronoi_cell(dv, s);
+      if (!dv.on_hull[s] && std::all_of(cell.begin(), cell.end(), [&](int t) { return region[t] != 0; })) expected.push_back(s);
+    }
+    EXPECT_EQ(samples_enclosed_by_region(dv, region, vertices), expected);
+    enclosed_in_all += expected.size();
+  }
+  EXPECT_GT(enclosed_in_all, 0u);
+}
+
+// label_voronoi_vertices_with_holes skips the repairs (steps 6 and 7) when samples enclosed
+// by the last region are left, as those have no curve edge. On noisy samples, where the
+// noise leaves such samples (a sample with a one-label cell), running the repairs on its
+// labels changes nothing.
+TEST(LabelingHoles, WithEvidenceLeftTheRepairsChangeNothing) {
+  int runs_with_evidence_left = 0;
+  for (const char* family : {"holes", "nested", "rose"}) {
+    for (std::uint64_t seed = 1; seed <= 2; ++seed) {
+      GeneratorSettings settings;
+      settings.family = family;
+      settings.sampler = "random";
+      settings.count = 3000;
+      settings.noise = 0.5;
+      settings.dense = 4096;
+      settings.seed = seed;
+      const DelaunayVoronoi dv = build_delaunay_voronoi(generate(settings).points);
+      VoronoiLabels labels = label_voronoi_vertices_with_holes(dv);
+      bool evidence_left = false;
+      for (int s = 0; s < dv.site_count() && !evidence_left; ++s) {
+        const std::vector<int> cell = testing::voronoi_cell(dv, s);
+        evidence_left = !dv.on_hull[s] && std::all_of(cell.begin(), cell.end(), [&](int t) {
+          return labels.inner[t] == labels.inner[cell.front()];
+        });
+      }
+      if (!evidence_left) continue;
+      ++runs_with_evidence_left;
+      const std::vector<std::uint8_t> before = labels.inner;
+      const std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);
+      EXPECT_EQ(relabel_bridging_ears(dv, labels.inner, curve_edges), 0) << family << " seed " << seed;
+      EXPECT_EQ(relabel_inner_vertices_outside_the_hull(dv, labels.inner, curve_edges), 0) << family << " seed " << seed;
+      EXPECT_EQ(labels.inner, before) << family << " seed " << seed;
+    }
+  }
+  EXPECT_GT(runs_with_evidence_left, 0);
 }
 
 // Where the paper's walks reach every curve, the extension must not change a thing.

@@ -2,6 +2,7 @@
 // degenerate configurations it promises to handle (co-circular, collinear, ties).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -11,6 +12,7 @@
 #include "test_support.h"
 #include "labeling/side_of_tangent_line.h"
 #include "voronoi/delaunay_voronoi.h"
+#include "voronoi/sort_by_decreasing_circumradius.h"
 
 namespace curvebench {
 namespace {
@@ -230,6 +232,55 @@ TEST(VoronoiLayer, ConvexHullMembershipFromAnyWedgeHint) {
     EXPECT_EQ(in_convex_hull(dv, q, wedge), expected) << q.x << " " << q.y;
     int fresh_hint = 0;
     EXPECT_EQ(in_convex_hull(dv, q, fresh_hint), expected) << q.x << " " << q.y;
+  }
+}
+
+// for_each_by_decreasing_circumradius is the full sort with the entries reached before their
+// turn left out, also when reaching changes during the visits and radii tie (a grid's
+// triangles all have one circumradius; the rose's do not), and whatever the list's order.
+TEST(VoronoiLayer, LazyRadiusOrderIsTheSortWithoutTheReachedEntries) {
+  std::vector<Point2> grid;
+  for (int i = 0; i < 30; ++i)
+    for (int j = 0; j < 30; ++j) grid.push_back({double(i), double(j)});
+  std::vector<Point2> rose = rose_in_curve_order(3000, 7);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> noise(0, 0.002);
+  for (Point2& p : rose) p = p + Point2{noise(rng), noise(rng)};
+  for (const auto& points : {grid, rose}) {
+    const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+    std::vector<int> list;
+    for (int t = 0; t < dv.triangle_count(); t += 1 + t % 3) list.push_back(t);
+    // A visit reaches the visited triangle's neighbours, as a walk from it would.
+    auto visits_in_order = [&](auto&& for_each) {
+      std::vector<std::uint8_t> reached(dv.triangle_count(), 0);
+      std::vector<int> visited;
+      for_each([&](int t) { return reached[t] != 0; }, [&](int t) {
+        visited.push_back(t);
+        reached[t] = 1;
+        for (int next : dv.neighbors[t]) {
+          if (next != kInfinite) reached[next] = 1;
+        }
+      });
+      return visited;
+    };
+    const std::vector<int> expected = visits_in_order([&](auto reached, auto visit) {
+      std::vector<int> sorted_list = list;
+      sort_by_decreasing_circumradius(dv, sorted_list);
+      for (int t : sorted_list) {
+        if (!reached(t)) visit(t);
+      }
+    });
+    std::vector<int> shuffled = list;
+    std::shuffle(shuffled.begin(), shuffled.end(), rng);
+    for (const auto& given : {list, shuffled}) {
+      int announced = 0;
+      const std::vector<int> lazy = visits_in_order([&](auto reached, auto visit) {
+        for_each_by_decreasing_circumradius(dv, given, reached, visit, [&](int) { ++announced; });
+      });
+      EXPECT_EQ(lazy, expected) << points.size() << " points";
+      EXPECT_GT(announced, 0);
+    }
+    EXPECT_LT(expected.size(), list.size()) << "entries reached before their turn";
   }
 }
 

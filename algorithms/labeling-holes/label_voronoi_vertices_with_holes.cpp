@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -78,6 +79,7 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
     }
   };
   enum class Boundary { other, missed_closed_curves, pinched_missed_closed_curves };
+  std::optional<MissedCurvesStandApart> stand_apart;  // made for the first closed boundary
   auto classify_boundary = [&] {
     for (const Edge& e : boundary) {
       ++boundary_degree[e[0]];
@@ -88,7 +90,9 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
       for (int site : e) closed = closed && enclosed[site] && boundary_degree[site] == 2;
     }
     for (const Edge& e : boundary) boundary_degree[e[0]] = boundary_degree[e[1]] = 0;
-    if (!closed || !missed_curves_stand_apart(dv, boundary)) return Boundary::other;
+    if (!closed) return Boundary::other;
+    if (!stand_apart) stand_apart.emplace(dv);
+    if (!(*stand_apart)(boundary)) return Boundary::other;
     return pinched ? Boundary::pinched_missed_closed_curves : Boundary::missed_closed_curves;
   };
 

@@ -12,18 +12,31 @@
 // Random sampling leaves a few large gaps on a true hole too (a glyph's counter at a few
 // hundred samples), so a curve is taken when most of its samples stand apart: more than half.
 //
-// In:  Delaunay/Voronoi arrays; `curves`, the Delaunay edges of one part's boundary, every
-//      sample on them with exactly two.
+// In:  Delaunay/Voronoi arrays, at construction; per call, `curves`, the Delaunay edges of one
+//      part's boundary, every sample on them with exactly two.
 // Out: true if more than half of the samples on them stand apart: the longer of the sample's
 //      two edges on them is shorter than every Delaunay edge from it to a sample not on them.
+// An object, so that the per-sample scratch is allocated once for all the parts of a labeling.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "voronoi/delaunay_voronoi.h"
 
 namespace curvebench {
 
-bool missed_curves_stand_apart(const DelaunayVoronoi& dv, const std::vector<Edge>& curves);
+class MissedCurvesStandApart {
+ public:
+  explicit MissedCurvesStandApart(const DelaunayVoronoi& dv);
+  bool operator()(const std::vector<Edge>& curves);
+
+ private:
+  bool has_a_nearer_sample_off_the_curves(int site, double squared_edge) const;
+
+  const DelaunayVoronoi& dv_;
+  std::vector<double> longest_;  // per sample: its longer edge on the curves (squared), -1 off them
+  std::vector<std::uint8_t> counted_;
+};
 
 }  // namespace curvebench

@@ -19,9 +19,7 @@ std::vector<int> samples_enclosed_by_region(const DelaunayVoronoi& dv, std::span
       int cell = first;
       do {
         inside = region[cell] != 0;
-        const auto& tri = dv.triangles[cell];
-        const int corner = tri[0] == site ? 0 : (tri[1] == site ? 1 : 2);
-        cell = dv.neighbors[cell][(corner + 1) % 3];  // counter-clockwise around the site
+        cell = dv.neighbors[cell][(corner_of_site(dv, cell, site) + 1) % 3];  // counter-clockwise around the site
       } while (inside && cell != first);
       if (inside) enclosed.push_back(site);
     }

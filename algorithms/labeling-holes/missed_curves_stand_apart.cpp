@@ -3,14 +3,6 @@
 #include <algorithm>
 
 namespace curvebench {
-namespace {
-
-int corner_of_site(const DelaunayVoronoi& dv, int triangle, int site) {
-  const auto& t = dv.triangles[triangle];
-  return t[0] == site ? 0 : (t[1] == site ? 1 : 2);
-}
-
-}  // namespace
 
 MissedCurvesStandApart::MissedCurvesStandApart(const DelaunayVoronoi& dv)
     : dv_(dv), longest_(dv.site_count(), -1.0), counted_(dv.site_count(), 0) {}

@@ -4,14 +4,6 @@
 #include <limits>
 
 namespace curvebench {
-namespace {
-
-int corner_of(const DelaunayVoronoi& dv, int triangle, int site) {
-  const auto& tri = dv.triangles[triangle];
-  return tri[0] == site ? 0 : (tri[1] == site ? 1 : 2);
-}
-
-}  // namespace
 
 int relabel_bridging_ears(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
                           const std::vector<int>& curve_edges) {
@@ -42,10 +34,10 @@ int relabel_bridging_ears(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& 
     };
     // Counter-clockwise around the site; a hull site's fan starts and ends at a hull edge.
     const int first = dv.site_triangle[site];
-    if (dv.on_hull[site]) consider(kInfinite, first, dv.triangles[first][(corner_of(dv, first, site) + 1) % 3]);
+    if (dv.on_hull[site]) consider(kInfinite, first, dv.triangles[first][(corner_of_site(dv, first, site) + 1) % 3]);
     int t = first;
     do {
-      const int corner = corner_of(dv, t, site);
+      const int corner = corner_of_site(dv, t, site);
       const int next = dv.neighbors[t][(corner + 1) % 3];
       consider(t, next, dv.triangles[t][(corner + 2) % 3]);
       t = next;

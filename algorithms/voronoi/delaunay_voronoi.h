@@ -62,6 +62,14 @@ struct DelaunayVoronoi {
 
 DelaunayVoronoi build_delaunay_voronoi(std::span<const Point2> points);
 
+// The corner (0, 1 or 2) of `site` in `triangle`, which must have it: the triangle after
+// `triangle` counter-clockwise around the site is neighbors[triangle][(corner + 1) % 3], the
+// one clockwise neighbors[triangle][(corner + 2) % 3].
+inline int corner_of_site(const DelaunayVoronoi& dv, int triangle, int site) {
+  const auto& t = dv.triangles[triangle];
+  return t[0] == site ? 0 : (t[1] == site ? 1 : 2);
+}
+
 // The benchmark's floor: CGAL's documented range insertion of (point, index) pairs, the
 // fastest documented way to a triangulation whose vertices know their input index. Returns
 // its vertex count. build_delaunay_voronoi builds the same triangulation faster by

@@ -65,7 +65,9 @@ void expect_valid(const Reconstruction& result, size_t point_count, const std::s
     const size_t count = curve->on_input_points ? point_count : curve->vertices.size();
     EXPECT_TRUE(in_range({curve->edges.begin(), curve->edges.end()}, count)) << where << ": curve edge out of range";
   }
-  if (result.moved_points) EXPECT_EQ(result.moved_points->size(), point_count) << where << ": one position per point";
+  if (result.moved_points) {
+    EXPECT_EQ(result.moved_points->size(), point_count) << where << ": one position per point";
+  }
   if (result.medial_axis) {
     EXPECT_EQ(result.medial_axis->vertices.size(), result.medial_axis->radii.size()) << where;
     EXPECT_TRUE(in_range(result.medial_axis->edges, result.medial_axis->vertices.size())) << where << ": medial-axis edge";

@@ -22,11 +22,6 @@ inline std::vector<Edge> cycle_edges(int n, int first = 0) {
   return edges;
 }
 
-// Corner (0, 1 or 2) of `site` in `triangle`.
-inline int corner_of(const DelaunayVoronoi& dv, int triangle, int site) {
-  const auto& t = dv.triangles[triangle];
-  return t[0] == site ? 0 : (t[1] == site ? 1 : 2);
-}
 
 // The Voronoi cell of `site` as the triangles (= Voronoi vertices) around it in
 // counter-clockwise order. A bounded cell is cyclic. An unbounded (hull) cell is the open
@@ -39,7 +34,7 @@ inline std::vector<int> voronoi_cell(const DelaunayVoronoi& dv, int site) {
   int t = first;
   do {
     cell.push_back(t);
-    t = dv.neighbors[t][(corner_of(dv, t, site) + 1) % 3];  // next triangle counter-clockwise
+    t = dv.neighbors[t][(corner_of_site(dv, t, site) + 1) % 3];  // next triangle counter-clockwise
   } while (t != kInfinite && t != first);
   return cell;
 }

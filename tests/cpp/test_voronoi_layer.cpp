@@ -17,7 +17,6 @@
 namespace curvebench {
 namespace {
 
-using testing::corner_of;
 using testing::lattice_circle;
 using testing::random_order;
 using testing::rose_in_curve_order;
@@ -138,8 +137,8 @@ TEST(VoronoiLayer, HullCellWalkCoversTheWholeFan) {
     const auto cell = voronoi_cell(dv, s);
     // The chain starts on the clockwise hull edge and ends on the counter-clockwise one.
     const int first = cell.front(), last = cell.back();
-    EXPECT_EQ(dv.neighbors[first][(corner_of(dv, first, s) + 2) % 3], kInfinite);
-    EXPECT_EQ(dv.neighbors[last][(corner_of(dv, last, s) + 1) % 3], kInfinite);
+    EXPECT_EQ(dv.neighbors[first][(corner_of_site(dv, first, s) + 2) % 3], kInfinite);
+    EXPECT_EQ(dv.neighbors[last][(corner_of_site(dv, last, s) + 1) % 3], kInfinite);
     total += static_cast<int>(cell.size());
   }
   EXPECT_EQ(total, 3 * dv.triangle_count());

@@ -59,7 +59,7 @@ SortedNeighbors sorted_delaunay_neighbors(const DelaunayVoronoi& dv, const Squar
     // stops at the hull edge on the other end, whose far site b has no triangle after it.
     for (int t = first; t >= 0;) {
       const auto& tri = dv.triangles[t];
-      const int corner = tri[0] == s ? 0 : (tri[1] == s ? 1 : 2);
+      const int corner = corner_of_site(dv, t, s);
       const int a = tri[(corner + 1) % 3];
       fan.emplace_back(squared_distance(s, a), a);
       const int next = dv.neighbors[t][(corner + 1) % 3];

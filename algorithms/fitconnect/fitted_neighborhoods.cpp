@@ -69,10 +69,10 @@ class AffectedSet {
     const auto at = std::lower_bound(points_.begin(), points_.end(), i);
     if (at == points_.end() || *at != i) points_.insert(at, i);
   }
-  // Removes member i and returns the next larger member, or -1.
+  // Removes member i and returns the next larger member, or kNone.
   int erase_and_next(int i) {
     const auto at = points_.erase(std::lower_bound(points_.begin(), points_.end(), i));
-    return at == points_.end() ? -1 : *at;
+    return at == points_.end() ? kNone : *at;
   }
 
  private:

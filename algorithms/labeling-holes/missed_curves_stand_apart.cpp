@@ -8,28 +8,19 @@ MissedCurvesStandApart::MissedCurvesStandApart(const DelaunayVoronoi& dv)
     : dv_(dv), longest_(dv.site_count(), -1.0), counted_(dv.site_count(), 0) {}
 
 // Whether a Delaunay neighbour of `site` off the curves is no farther than the squared length
-// `squared_edge`: the triangles around it counter-clockwise from one of them, then clockwise
-// from that one where a hull edge stops the first turn.
+// `squared_edge`. Counter-clockwise from site_triangle, the triangles around the site: for a
+// hull site its whole fan (delaunay_voronoi.h), whose first and last triangles hold its two
+// hull neighbours.
 bool MissedCurvesStandApart::has_a_nearer_sample_off_the_curves(int site, double squared_edge) const {
-  auto nearer_in = [&](int triangle) {
-    const int corner = corner_of_site(dv_, triangle, site);
-    for (int other : {dv_.triangles[triangle][(corner + 1) % 3], dv_.triangles[triangle][(corner + 2) % 3]}) {
-      if (longest_[other] < 0 && squared_distance(dv_.sites[site], dv_.sites[other]) <= squared_edge) return true;
-    }
-    return false;
-  };
   const int first = dv_.site_triangle[site];
   int t = first;
   do {
-    if (nearer_in(t)) return true;
-    t = dv_.neighbors[t][(corner_of_site(dv_, t, site) + 1) % 3];
-  } while (t != kInfinite && t != first);
-  if (t == kInfinite) {
-    for (t = dv_.neighbors[first][(corner_of_site(dv_, first, site) + 2) % 3]; t != kInfinite;
-         t = dv_.neighbors[t][(corner_of_site(dv_, t, site) + 2) % 3]) {
-      if (nearer_in(t)) return true;
+    const int corner = corner_of_site(dv_, t, site);
+    for (int other : {dv_.triangles[t][(corner + 1) % 3], dv_.triangles[t][(corner + 2) % 3]}) {
+      if (longest_[other] < 0 && squared_distance(dv_.sites[site], dv_.sites[other]) <= squared_edge) return true;
     }
-  }
+    t = dv_.neighbors[t][(corner + 1) % 3];
+  } while (t != kInfinite && t != first);
   return false;
 }
 

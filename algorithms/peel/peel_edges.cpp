@@ -165,8 +165,7 @@ CurveEdge nearest_free_neighbour(const DelaunayVoronoi& dv, int end, double boun
   const int first = dv.site_triangle[end];
   int t = first;
   while (t != kInfinite) {
-    const auto& v = dv.triangles[t];
-    const int c = v[0] == end ? 0 : (v[1] == end ? 1 : 2);
+    const int c = corner_of_site(dv, t, end);
     consider(t, (c + 2) % 3);                        // end - v[c + 1]
     const int next = dv.neighbors[t][(c + 1) % 3];  // across end - v[c + 2]: counter-clockwise
     if (next == kInfinite) consider(t, (c + 1) % 3);  // the last side of a hull site's fan

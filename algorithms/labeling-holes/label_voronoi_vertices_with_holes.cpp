@@ -9,6 +9,7 @@
 #include "labeling-holes/curve_edges_per_sample.h"
 #include "labeling-holes/enclosed_samples.h"
 #include "labeling-holes/missed_curves_stand_apart.h"
+#include "labeling-holes/open_pockets_closed_at_their_mouths.h"
 #include "labeling-holes/relabel_bridging_ears.h"
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
 #include "labeling-holes/walk_region_from_its_boundary.h"
@@ -132,10 +133,11 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   for (int s = 0; s < dv.site_count(); ++s) {
     if (labels.source_vertex[s] == kUnpaired && dv.site_triangle[s] >= 0) enclosed.push_back(s);
   }
-  // Without enclosed samples the paper's walks reached every sample's curve.
+  // Steps 2-5, one nesting level at a time from the inner region; true when no part was
+  // taken at the first level (the region is still every inner vertex).
   std::vector<std::uint8_t> region;
   std::vector<int> region_vertices;
-  if (!enclosed.empty()) {
+  auto take_missed_curves = [&] {
     region = labels.inner;
     region_vertices.resize(dv.triangle_count() - std::count(region.begin(), region.end(), 0) + 1);
     std::size_t count = 0;
@@ -144,19 +146,30 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
       count += region[t] != 0;
     }
     region_vertices.resize(count);
-  }
-  while (!enclosed.empty()) {
-    const RegionWalk walk = walk_region_from_its_boundary(dv, region, region_vertices);
-    std::vector<int> flipped = parts_across_missed_curves(dv, region, walk, enclosed);
-    if (flipped.empty()) break;  // no next region, so no evidence in it
-    for (int t : region_vertices) region[t] = 0;
-    for (int t : flipped) {
-      region[t] = 1;
-      labels.inner[t] ^= 1;
+    bool first_level = true;
+    while (!enclosed.empty()) {
+      const RegionWalk walk = walk_region_from_its_boundary(dv, region, region_vertices);
+      std::vector<int> flipped = parts_across_missed_curves(dv, region, walk, enclosed);
+      if (flipped.empty()) break;  // no next region, so no evidence in it
+      first_level = false;
+      for (int t : region_vertices) region[t] = 0;
+      for (int t : flipped) {
+        region[t] = 1;
+        labels.inner[t] ^= 1;
+      }
+      std::sort(flipped.begin(), flipped.end());
+      region_vertices = std::move(flipped);
+      enclosed = samples_enclosed_by_region(dv, region, region_vertices);
     }
-    std::sort(flipped.begin(), flipped.end());
-    region_vertices = std::move(flipped);
-    enclosed = samples_enclosed_by_region(dv, region, region_vertices);
+    return first_level;
+  };
+  // Without enclosed samples the paper's walks reached every sample's curve.
+  if (!enclosed.empty() && take_missed_curves() && !enclosed.empty() &&
+      open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed) > 0) {
+    // Step 8 opened pockets: their walls are on the curve, and what evidence is left lies
+    // across missed curves or in pockets not opened.
+    enclosed = samples_enclosed_by_region(dv, labels.inner, region_vertices);
+    take_missed_curves();
   }
   // The loop stops with evidence left only where no part was taken: those samples' cells lie
   // in the last region, all of one label, so they have no curve edge, and both repairs below

@@ -496,5 +496,33 @@ TEST(LabelingHoles, NoHoleJoinsSamplesOfPocketsThePaperClosedOff) {
   }
 }
 
+TEST(LabelingHoles, ThePocketsOfAnSThePaperClosedOffAreOpened) {
+  // holes.json's S at 400 points, seeds 3 and 5: the paper's walk stops at the mouth of one of
+  // the S's pockets (an undersampled stroke end) and closes the curve across it; the walls'
+  // samples keep all-inner cells. Step 8 (open_pockets_closed_at_their_mouths.h) walks the
+  // pocket from its mouth, and the curve is the S's own.
+  constexpr const char* kGlyphS =
+      "# DejaVu Sans glyph 'S' (matplotlib TextPath)\n0.53515625 0.70515625\n0.53515625 0.60890625\n0.48062499999999997 0.63234375\n"
+      "0.42921875 0.64890625\n0.380234375 0.6588671875000001\n0.33296875 0.6621875\n0.2616796875 0.654375\n"
+      "0.20875 0.6309375\n0.17593750000000002 0.5930859374999999\n0.165 0.54203125\n0.172265625 0.49953125\n"
+      "0.1940625 0.46890625\n0.2361328125 0.44671875\n0.30421875 0.42921875\n0.36375 0.41703125\n"
+      "0.45960937500000004 0.38796875\n0.5265625 0.34296875\n0.5659375 0.28105468749999996\n0.5790625 0.20125\n"
+      "0.5612890625 0.1080078125\n0.50796875 0.04046875\n0.42046874999999995 -0.0005468750000000014\n0.29984375 -0.01421875\n"
+      "0.2464453125 -0.0112890625\n0.1896875 -0.0025\n0.13035156250000002 0.01203125\n0.06890625 0.0321875\n"
+      "0.06890625 0.13375\n0.12832031249999998 0.1042578125\n0.1865625 0.08296875000000001\n0.2437109375 0.0701953125\n"
+      "0.29984375 0.0659375\n0.374609375 0.07421875\n0.43015625 0.0990625\n0.464609375 0.13941406250000002\n"
+      "0.47609375 0.19390625\n0.4678515625 0.24167968750000002\n0.443125 0.2778125\n0.399609375 0.3043359375\n"
+      "0.335 0.32328125\n0.27484375 0.335\n0.17976562499999998 0.36312500000000003\n0.11515625 0.40375\n"
+      "0.0782421875 0.45980468750000003\n0.0659375 0.53421875\n0.08296875000000001 0.6206640625\n0.1340625 0.6865625\n"
+      "0.2150390625 0.72828125\n0.32171875 0.7421875\n0.3735546875 0.73984375\n0.42625 0.7328125\n"
+      "0.4801171875 0.7212890625\n";
+  for (std::uint64_t seed : {3, 5}) {
+    const SampledScene samples = glyph_sample(kGlyphS, 400, seed);
+    const std::vector<Edge> truth = sorted(samples.true_edges);
+    EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), truth) << "seed " << seed;
+    EXPECT_NE(sorted(*run("labeling", samples.points).curve_edges), truth) << "seed " << seed;
+  }
+}
+
 }  // namespace
 }  // namespace curvebench

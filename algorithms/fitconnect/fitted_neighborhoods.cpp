@@ -345,8 +345,14 @@ class FitConnect {
     return kNone;
   }
 
-  // One cached stream per point, fetched in doubling batches: the list only ever grows.
-  int batch_size(int wanted) const { return std::min(n_, std::max(2 * wanted, 8) + 1); }
+  // One cached stream per point, fetched in doubling batches: the list only ever grows. A
+  // batch holds no more than the cap lets a list grow to (INITIAL takes two regardless); the
+  // stream's entries do not depend on the batch size. Self comes first, hence the + 1.
+  int batch_size(int wanted) const {
+    int neighbors = std::max(2 * wanted, 8);
+    if (max_neighbors_ > 0) neighbors = std::min(neighbors, std::max(max_neighbors_, wanted));
+    return std::min(n_, neighbors + 1);
+  }
   void fetch_stream(int i, int k) {
     nn_.k_nearest(p_[i], k, knn_buffer_);
     std::erase(knn_buffer_, i);

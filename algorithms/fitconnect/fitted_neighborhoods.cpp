@@ -148,8 +148,8 @@ class ListPool {
   std::vector<Block> blocks_;
 };
 
-// The sites' indices in Z order of the cells of a grid over their bounding box, about four
-// sites a cell, by a counting sort; index order if the box is a point or its extent overflows.
+// The sites' indices in Z order of the cells of a grid over their bounding box, one to four
+// sites a cell on average, by a counting sort; index order if the box's extent overflows.
 std::vector<int> z_order(std::span<const Point2> sites) {
   const int n = static_cast<int>(sites.size());
   std::vector<int> order(n);

@@ -129,6 +129,7 @@ class ListPool {
     }
     block.size = size;
   }
+  // `values` must lie outside this pool, whose array a move may reallocate.
   void assign(int i, std::span<const int> values) {
     blocks_[i].size = 0;  // nothing to keep when the list moves
     resize(i, static_cast<int>(values.size()));

@@ -37,10 +37,13 @@ NearestNeighbors::NearestNeighbors(std::span<const Point2> points)
 NearestNeighbors::~NearestNeighbors() = default;
 
 void NearestNeighbors::sort_by_distance(Point2 query, std::vector<int>& indices) const {
-  std::sort(indices.begin(), indices.end(), [&](int a, int b) {
+  const auto nearer = [&](int a, int b) {
     const double da = squared_distance(query, points_[a]), db = squared_distance(query, points_[b]);
     return da < db || (da == db && a < b);
-  });
+  };
+  // The tree's k nearest come ordered by distance, so often already in this order; the order
+  // is strict, so sorting could only return the same.
+  if (!std::is_sorted(indices.begin(), indices.end(), nearer)) std::sort(indices.begin(), indices.end(), nearer);
 }
 
 void NearestNeighbors::k_nearest(Point2 query, int k, std::vector<int>& out) const {

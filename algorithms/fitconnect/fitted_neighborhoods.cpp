@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -97,6 +98,89 @@ class Marks {
   std::uint32_t current_ = 0;
 };
 
+// Per-point lists of indices in one array rather than millions of small heap blocks: each
+// list owns a block of it; one that outgrows its block moves to a new one at the end, with
+// room to double.
+class ListPool {
+ public:
+  ListPool() = default;
+  // One empty list per entry of `capacities`, with a block of that size; blocks in list order,
+  // so that lists of nearby indices are near in memory.
+  explicit ListPool(const std::vector<int>& capacities) : blocks_(capacities.size()) {
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < capacities.size(); ++i) {
+      blocks_[i] = {total, 0, capacities[i]};
+      total += capacities[i];
+    }
+    items_.resize(total);
+  }
+  int size(int i) const { return blocks_[i].size; }
+  std::span<const int> list(int i) const { return {items_.data() + blocks_[i].begin, std::size_t(blocks_[i].size)}; }
+  std::span<int> list(int i) { return {items_.data() + blocks_[i].begin, std::size_t(blocks_[i].size)}; }
+  // Resizes list i, keeping its first entries; entries past the old size are unset.
+  void resize(int i, int size) {
+    Block& block = blocks_[i];
+    if (size > block.capacity) {
+      const std::size_t moved = items_.size();
+      block.capacity = std::max(size, 2 * block.capacity);
+      items_.resize(moved + block.capacity);
+      std::copy_n(items_.begin() + block.begin, block.size, items_.begin() + moved);
+      block.begin = moved;
+    }
+    block.size = size;
+  }
+  // `values` must lie outside this pool, whose array a move may reallocate.
+  void assign(int i, std::span<const int> values) {
+    blocks_[i].size = 0;  // nothing to keep when the list moves
+    resize(i, static_cast<int>(values.size()));
+    std::copy(values.begin(), values.end(), list(i).begin());
+  }
+  void push_back(int i, int v) {
+    resize(i, blocks_[i].size + 1);
+    list(i).back() = v;
+  }
+
+ private:
+  struct Block {
+    std::size_t begin;
+    int size, capacity;
+  };
+  std::vector<int> items_;
+  std::vector<Block> blocks_;
+};
+
+// The sites' indices in Z order of the cells of a grid over their bounding box, one to four
+// sites a cell on average, by a counting sort; index order if the box's extent overflows.
+std::vector<int> z_order(std::span<const Point2> sites) {
+  const int n = static_cast<int>(sites.size());
+  std::vector<int> order(n);
+  double lo_x = sites[0].x, hi_x = lo_x, lo_y = sites[0].y, hi_y = lo_y;
+  for (const Point2& q : sites) {
+    lo_x = std::min(lo_x, q.x), hi_x = std::max(hi_x, q.x);
+    lo_y = std::min(lo_y, q.y), hi_y = std::max(hi_y, q.y);
+  }
+  int bits = 0;
+  while (bits < 15 && (4 << (2 * bits)) < n) ++bits;
+  const int side = 1 << bits;
+  const double scale = side / std::max(hi_x - lo_x, hi_y - lo_y);
+  if (!(scale > 0) || !std::isfinite(scale)) {
+    std::iota(order.begin(), order.end(), 0);
+    return order;
+  }
+  auto cell_along = [&](double offset) { return std::min(side - 1, static_cast<int>(offset * scale)); };
+  std::vector<int> cell(n), cell_start(side * side + 1, 0);
+  for (int i = 0; i < n; ++i) {
+    const int x = cell_along(sites[i].x - lo_x), y = cell_along(sites[i].y - lo_y);
+    int z = 0;
+    for (int b = 0; b < bits; ++b) z |= (((x >> b) & 1) << (2 * b)) | (((y >> b) & 1) << (2 * b + 1));
+    cell[i] = z;
+    ++cell_start[z + 1];
+  }
+  std::partial_sum(cell_start.begin(), cell_start.end(), cell_start.begin());
+  for (int i = 0; i < n; ++i) order[cell_start[cell[i]]++] = i;
+  return order;
+}
+
 // |v| by a square root where the sum of squares is safely in range, else by std::hypot: the
 // same value up to the last bit, at a fraction of hypot's cost on the hot path.
 double length(Point2 v) {
@@ -144,10 +228,10 @@ class FitConnect {
         n_(static_cast<int>(sites.size())),
         max_neighbors_(max_neighbors),
         nn_(sites),
-        stream_(n_),
+        streams_(std::vector<int>(n_, batch_size(2) - 1)),
         grown_(n_, 0),
         reach_(n_, -1.0),
-        refs_(n_),
+        sides_(std::vector<int>(n_, batch_size(2) - 1)),
         out_(unfitted(n_, State::Initial)),
         open_(n_),
         side_marks_(n_),
@@ -155,6 +239,15 @@ class FitConnect {
         other_marks_(n_),
         list_position_(n_) {
     for (int i = 0; i < n_; ++i) open_.insert(i);
+    // Every stream's first batch up front, in Z order whatever the input order: the queries of
+    // the first visits, each near the one before in the tree and without the visits' state
+    // between them in the cache. Ref(q) gets a block for every stream whose first batch holds q.
+    std::vector<int> first_batch_holders(n_, 0);
+    for (int i : z_order(sites)) {
+      fetch_stream(i, batch_size(2));
+      for (int q : streams_.list(i)) ++first_batch_holders[q];
+    }
+    refs_ = ListPool(first_batch_holders);
   }
 
   FittedNeighborhoods run() {
@@ -168,6 +261,7 @@ class FitConnect {
     }
     collect_edges();
     collect_residuals();
+    for (int i = 0; i < n_; ++i) out_.neighborhoods[i].assign(sides_.list(i).begin(), sides_.list(i).end());
     return std::move(out_);
   }
 
@@ -175,7 +269,12 @@ class FitConnect {
   static bool is_linked_state(State s) { return s == State::Manifold || s == State::Leaf || s == State::Sharp; }
   bool is(int i, State s) const { return i != kNone && state_[i] == s; }  // state[-1] is no state
   int link_count(int i) const { return (link_[i][0] != kNone) + (link_[i][1] != kNone); }
-  std::span<const int> side(int i, int t) const { return out_.side(i, t); }
+  // A_i^t as FittedNeighborhoods::side has it.
+  std::span<const int> side(int i, int t) const {
+    const std::span<const int> all = sides_.list(i);
+    const int split = out_.side0_sizes[i];
+    return t == 0 ? all.first(split) : all.subspan(split);
+  }
   bool in_side(int i, int t, int q) const {
     // A point farther than the farthest of R_i is in neither side: a cheap exact test first.
     if (q < 0 || squared_distance(p_[i], p_[q]) > reach_[i]) return false;
@@ -280,6 +379,20 @@ class FitConnect {
     return kNone;
   }
 
+  // One cached stream per point, fetched in doubling batches: the list only ever grows. A
+  // batch holds no more than the cap lets a list grow to (INITIAL takes two regardless); the
+  // stream's entries do not depend on the batch size. Self comes first, hence the + 1.
+  int batch_size(int wanted) const {
+    int neighbors = std::max(2 * wanted, 8);
+    if (max_neighbors_ > 0) neighbors = std::min(neighbors, std::max(max_neighbors_, wanted));
+    return std::min(n_, neighbors + 1);
+  }
+  void fetch_stream(int i, int k) {
+    nn_.k_nearest(p_[i], k, knn_buffer_);
+    std::erase(knn_buffer_, i);
+    streams_.assign(i, knn_buffer_);
+  }
+
   // Spec 2.3: one growth step and refit; false if the list is exhausted (n - 1 neighbours or
   // the cap, spec 3), in which case nothing changes.
   bool grow(int i) {
@@ -290,18 +403,12 @@ class FitConnect {
       if (grown_[i] >= n_ - 1 || (max_neighbors_ > 0 && grown_[i] >= max_neighbors_)) return false;
       wanted = grown_[i] + 1;
     }
-    std::vector<int>& stream = stream_[i];
-    if (static_cast<int>(stream.size()) < wanted) {
-      // One cached stream per point, fetched in doubling batches: the list only ever grows.
-      nn_.k_nearest(p_[i], std::min(n_, std::max(2 * wanted, 8) + 1), knn_buffer_);
-      stream.clear();
-      for (int q : knn_buffer_)
-        if (q != i) stream.push_back(q);
-    }
+    if (streams_.size(i) < wanted) fetch_stream(i, batch_size(wanted));
     // Squared distances that overflow to infinity (coordinates beyond about 1e154) rank no
     // neighbour: the list ends there, as if exhausted.
+    const std::span<const int> stream = streams_.list(i);
     if (static_cast<int>(stream.size()) < wanted) return false;
-    for (int k = grown_[i]; k < wanted; ++k) refs_[stream[k]].push_back(i);
+    for (int k = grown_[i]; k < wanted; ++k) refs_.push_back(stream[k], i);
     grown_[i] = wanted;
     // The list is ordered by this same squared distance (nearest_neighbors.h); the margin
     // only guards against a compiler evaluating it differently in the two places.
@@ -313,9 +420,10 @@ class FitConnect {
   // Spec 2.1-2.2: circle through p and R_p, sides, and CONFORM / NONCONFORM.
   void refit(int i) {
     const int k = grown_[i];
+    const std::span<const int> stream = streams_.list(i);
     fit_points_.resize(k + 1);
     fit_points_[0] = p_[i];
-    for (int j = 0; j < k; ++j) fit_points_[j + 1] = p_[stream_[i][j]];
+    for (int j = 0; j < k; ++j) fit_points_[j + 1] = p_[stream[j]];
     const FittedCircle circle = hyper_circle_fit(fit_points_);
     out_.centers[i] = circle.center;
     out_.radii[i] = circle.radius;
@@ -323,28 +431,27 @@ class FitConnect {
     const Point2 radial = p_[i] - circle.center;
     out_.normals[i] = (1.0 / norm(radial)) * radial;
 
-    std::vector<int>& s = out_.neighborhoods[i];
     int& split = out_.side0_sizes[i];
     if (std::isfinite(circle.center.x) && std::isfinite(circle.center.y)) {
       // Stable sort of (p, R_p) by angle about the centre relative to p; p has angle 0 and
       // comes first in the list, so A^0 is exactly the negative angles (reversed) and A^1 the
       // rest. The previous fit's order (A^0 reversed, then A^1) is the guess to start from.
-      for (int j = 0; j < k; ++j) list_position_[stream_[i][j]] = j;
+      for (int j = 0; j < k; ++j) list_position_[stream[j]] = j;
       order_.clear();
-      const int previous_split = split;
-      for (int j = previous_split - 1; j >= 0; --j) order_.push_back(list_position_[s[j]]);
-      for (std::size_t j = previous_split; j < s.size(); ++j) order_.push_back(list_position_[s[j]]);
+      const std::span<const int> previous = sides_.list(i);
+      for (int j = split - 1; j >= 0; --j) order_.push_back(list_position_[previous[j]]);
+      for (std::size_t j = split; j < previous.size(); ++j) order_.push_back(list_position_[previous[j]]);
       const int negative =
           sort_by_angle_about(circle.center, p_[i], std::span<const Point2>(fit_points_).subspan(1), order_);
-      s.resize(k);
-      for (int j = 0; j < negative; ++j) s[negative - 1 - j] = stream_[i][order_[j]];
-      for (int j = negative; j < k; ++j) s[j] = stream_[i][order_[j]];
+      sides_.resize(i, k);
+      const std::span<int> s = sides_.list(i);
+      for (int j = 0; j < negative; ++j) s[negative - 1 - j] = stream[order_[j]];
+      for (int j = negative; j < k; ++j) s[j] = stream[order_[j]];
       split = negative;
     } else {
       // A non-finite centre (degenerate branch of the fit with z = 0) gives the authors NaN
       // angles, which their ordered map keeps in list order after p: A^0 empty.
-      s.clear();
-      for (int j = 0; j < k; ++j) s.push_back(stream_[i][j]);
+      sides_.assign(i, stream.first(k));
       split = 0;
     }
 
@@ -360,14 +467,14 @@ class FitConnect {
   }
 
   SavedFit save_fit(int i) {
-    saved_neighborhood_ = out_.neighborhoods[i];
+    saved_neighborhood_.assign(sides_.list(i).begin(), sides_.list(i).end());
     return {out_.centers[i], out_.normals[i], out_.radii[i], out_.side0_sizes[i]};
   }
   void restore_fit(int i, const SavedFit& saved) {
     out_.centers[i] = saved.center;
     out_.normals[i] = saved.normal;
     out_.radii[i] = saved.radius;
-    out_.neighborhoods[i] = saved_neighborhood_;
+    sides_.assign(i, saved_neighborhood_);
     out_.side0_sizes[i] = saved.side0_size;
   }
 
@@ -388,7 +495,7 @@ class FitConnect {
       const double r = out_.radii[i];
       // std::max(residual, NaN) keeps residual: a NaN radius (degenerate fit, spec 2.1) gives 0.
       double residual = std::max(0.0, std::fabs(distance(p_[i], c) - r));
-      for (int q : out_.neighborhoods[i]) residual = std::max(residual, std::fabs(distance(p_[q], c) - r));
+      for (int q : sides_.list(i)) residual = std::max(residual, std::fabs(distance(p_[q], c) - r));
       out_.residuals[i] = residual;
     }
   }
@@ -409,11 +516,12 @@ class FitConnect {
   int n_;
   int max_neighbors_;
   NearestNeighbors nn_;
-  std::vector<std::vector<int>> stream_;  // nearest neighbours of each point, self excluded
-  std::vector<int> grown_;                // |R_i|: R_i is the prefix of stream_[i]
-  std::vector<double> reach_;             // squared distance to the farthest of R_i, a little more
-  std::vector<std::vector<int>> refs_;    // Ref(q) = {i : q in R_i}
-  FittedNeighborhoods out_;               // states, links, fits and sides as the spec names them
+  ListPool streams_;           // nearest neighbours of each point, self excluded
+  std::vector<int> grown_;     // |R_i|: R_i is the prefix of streams_.list(i)
+  std::vector<double> reach_;  // squared distance to the farthest of R_i, a little more
+  ListPool sides_;             // A_i^0 then A_i^1, moved to out_.neighborhoods at the end
+  ListPool refs_;              // Ref(q) = {i : q in R_i}
+  FittedNeighborhoods out_;    // states, links, fits and side sizes as the spec names them
   std::vector<State>& state_ = out_.states;
   std::vector<std::array<int, 2>>& link_ = out_.links;
   OpenSet open_;
@@ -733,7 +841,7 @@ void FitConnect::propagate() {
   while (!affected_.empty()) {
     for (int q = affected_.first(); q != kNone;) {
       const int next = affected_.erase_and_next(q);
-      std::vector<int>& refs = refs_[q];
+      const std::span<int> refs = refs_.list(q);
       std::sort(refs.begin(), refs.end());  // Ref(q) is visited ascending
       for (int r : refs)
         if (link_count(r) > 0 && !consistent(r)) drop_all(r);

@@ -66,7 +66,9 @@ void NearestNeighbors::k_nearest(Point2 query, int k, std::vector<int>& out) con
       squared_distance(query, points_[out[wanted]]) == squared_distance(query, points_[out[wanted - 1]])) {
     within_squared_distance(query, squared_distance(query, points_[out[wanted - 1]]), out);
   }
-  out.resize(wanted);
+  // Fewer than `wanted` when the rest lie at a squared distance that overflows to infinity
+  // (coordinates beyond about 1e154): the tree never ranks those.
+  if (static_cast<int>(out.size()) > wanted) out.resize(wanted);
 }
 
 void NearestNeighbors::within_radius(Point2 query, double radius, std::vector<int>& out) const {

@@ -22,7 +22,8 @@ class NearestNeighbors {
   NearestNeighbors& operator=(const NearestNeighbors&) = delete;
 
   // The min(k, size) points nearest to `query`, into `out` (cleared first). A point equal to
-  // the query is included (at distance 0).
+  // the query is included (at distance 0). Points whose squared distance to the query
+  // overflows to infinity are never returned, so `out` may hold fewer.
   void k_nearest(Point2 query, int k, std::vector<int>& out) const;
   // Every point at distance <= radius from `query`, into `out` (cleared first).
   void within_radius(Point2 query, double radius, std::vector<int>& out) const;

@@ -2,10 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <utility>
 
 #include "core/nearest_neighbors.h"
+#include "core/z_order.h"
 
 namespace curvebench {
 namespace {
@@ -36,35 +35,6 @@ std::vector<Point2> scaled_sites(std::span<const Point2> sites) {
     return Point2{std::ldexp(p.x, shift), std::ldexp(p.y, shift)};
   });
   return scaled;
-}
-
-// x's bits spread to the even bit positions of the result.
-std::uint64_t spread_bits(std::uint32_t x) {
-  std::uint64_t v = x;
-  v = (v | (v << 16)) & 0x0000FFFF0000FFFFull;
-  v = (v | (v << 8)) & 0x00FF00FF00FF00FFull;
-  v = (v | (v << 4)) & 0x0F0F0F0F0F0F0F0Full;
-  v = (v | (v << 2)) & 0x3333333333333333ull;
-  v = (v | (v << 1)) & 0x5555555555555555ull;
-  return v;
-}
-
-// The sites in Z (Morton) order of their (scaled) positions. Queried in
-// this order, consecutive k-nearest searches walk the same k-d tree nodes, so shuffled input
-// stays cache friendly; the edges do not depend on the query order.
-std::vector<int> z_order(const std::vector<Point2>& points) {
-  // Each coordinate mapped from (-2^kScale, 2^kScale) to a 31-bit integer cell.
-  auto cell = [](double c) {
-    return static_cast<std::uint32_t>(std::min((std::ldexp(c, -kScale) + 1.0) * 0x1p30, 0x1p31 - 1));
-  };
-  std::vector<std::pair<std::uint64_t, int>> keyed(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    keyed[i] = {spread_bits(cell(points[i].x)) | (spread_bits(cell(points[i].y)) << 1), static_cast<int>(i)};
-  }
-  std::sort(keyed.begin(), keyed.end());
-  std::vector<int> order(points.size());
-  std::transform(keyed.begin(), keyed.end(), order.begin(), [](const auto& key) { return key.second; });
-  return order;
 }
 
 // `ranked` (the query's k nearest sites) without the query site itself: ranks 1, 2, ... of

@@ -164,12 +164,22 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     return first_level;
   };
   // Without enclosed samples the paper's walks reached every sample's curve.
-  if (!enclosed.empty() && take_missed_curves() && !enclosed.empty() &&
-      open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed) > 0) {
-    // Step 8 opened pockets: their walls are on the curve, and what evidence is left lies
-    // across missed curves or in pockets not opened.
-    enclosed = samples_enclosed_by_region(dv, labels.inner, region_vertices);
-    take_missed_curves();
+  if (!enclosed.empty() && take_missed_curves() && !enclosed.empty()) {
+    std::vector<std::uint8_t> before_pockets = labels.inner;
+    if (open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed) > 0) {
+      // Step 8 opened pockets: their walls are on the curve, and the levels run again for the
+      // holes the pockets' walls kept from being taken. As with pinches, the opened pockets
+      // stand only if then every enclosed sample lies on a curve: evidence left over means the
+      // walk from a mouth went astray (a sparse outline whose stroke is narrower than the
+      // gaps between its samples), and the labels go back to what they were.
+      std::vector<int> evidence = std::move(enclosed);
+      enclosed = samples_enclosed_by_region(dv, labels.inner, region_vertices);
+      take_missed_curves();
+      if (!enclosed.empty()) {
+        labels.inner = std::move(before_pockets);
+        enclosed = std::move(evidence);
+      }
+    }
   }
   // The loop stops with evidence left only where no part was taken: those samples' cells lie
   // in the last region, all of one label, so they have no curve edge, and both repairs below

@@ -20,7 +20,8 @@
 // paper found. The flipped parts are the next level's region, with its own enclosed samples.
 // Where the first level takes nothing and evidence is left, pockets the paper closed at their
 // mouths are walked from the mouth and opened where their walls then join the curve
-// (open_pockets_closed_at_their_mouths.h), and the levels run again.
+// (open_pockets_closed_at_their_mouths.h), and the levels run again; this stands only if no
+// evidence is then left.
 // Without enclosed samples the labels are the paper's, unchanged. Last, the paper's bridges
 // between curves are relabelled: ears through one sample (relabel_bridging_ears.h), then
 // corridors outside the convex hull (relabel_inner_vertices_outside_the_hull.h).

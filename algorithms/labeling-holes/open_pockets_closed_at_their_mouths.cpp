@@ -3,8 +3,7 @@
 #include <algorithm>
 
 #include "labeling-holes/missed_curves_stand_apart.h"
-#include "labeling/label_voronoi_vertices.h"
-#include "labeling/side_of_tangent_line.h"
+#include "labeling/walk_steps.h"
 
 namespace curvebench {
 namespace {
@@ -51,10 +50,11 @@ std::vector<int> mouths_in_order(const DelaunayVoronoi& dv, const std::vector<st
       t = dv.neighbors[t][(corner + 1) % 3];  // an enclosed sample's fan is closed and all inner
     } while (t != first);
   }
-  std::sort(mouths.begin(), mouths.end());
+  // Algorithm 2's heap order, ties by index; a mouth seen from two enclosed samples once.
+  std::sort(mouths.begin(), mouths.end(), [&](int a, int b) {
+    return dv.circumradii[a] > dv.circumradii[b] || (dv.circumradii[a] == dv.circumradii[b] && a < b);
+  });
   mouths.erase(std::unique(mouths.begin(), mouths.end()), mouths.end());
-  // Algorithm 2's heap order; ties by index.
-  std::stable_sort(mouths.begin(), mouths.end(), [&](int a, int b) { return dv.circumradii[a] > dv.circumradii[b]; });
   return mouths;
 }
 
@@ -91,18 +91,11 @@ int open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std::vector<s
       if (flags[vertex] & kReached) continue;
       flags[vertex] |= kReached;
       reached.push_back(vertex);
-      bool stopped = false;  // Definition 5 before pairing, as in label_voronoi_vertices
-      for (int site : dv.triangles[vertex]) {
-        const int s = source[site];
-        stopped = stopped || (vertex != mouth && s >= 0 && s != vertex && side_of_tangent_line(dv, site, s, vertex) < 0);
-      }
-      if (stopped) continue;  // gap 2: a stopped vertex ends its branch
+      // Gap 2: a vertex across a tangent line ends its branch.
+      if (vertex != mouth && crosses_a_tangent_line(dv, source, vertex)) continue;
       flags[vertex] |= kInPocket;
       pocket.push_back(vertex);
-      for (int site : dv.triangles[vertex]) {
-        const int s = source[site];
-        if (s == kUnpaired || dv.circumradii[vertex] > dv.circumradii[s]) source[site] = vertex;
-      }
+      pair_samples_with(dv, source, vertex);
       for (int k = 2; k >= 0; --k) {
         const int next = dv.neighbors[vertex][k];
         if (is_inner(inner, next) && !(flags[next] & kReached) && has_an_enclosed_sample(next)) stack.push_back(next);

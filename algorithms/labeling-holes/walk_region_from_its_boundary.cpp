@@ -3,8 +3,7 @@
 #include <cstdint>
 #include <utility>
 
-#include "labeling/label_voronoi_vertices.h"
-#include "labeling/side_of_tangent_line.h"
+#include "labeling/walk_steps.h"
 #include "voronoi/sort_by_decreasing_circumradius.h"
 
 namespace curvebench {
@@ -25,14 +24,6 @@ RegionWalk walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<co
 
   std::vector<int> source(dv.site_count(), kUnpaired);
   std::vector<int> stack;
-  // Definition 5 before pairing, as in label_voronoi_vertices (gap 1 of labeling/README.md).
-  auto crosses_a_tangent_line = [&](int vertex) {
-    for (int site : dv.triangles[vertex]) {
-      const int s = source[site];
-      if (s >= 0 && s != vertex && side_of_tangent_line(dv, site, s, vertex) < 0) return true;
-    }
-    return false;
-  };
   // Seeds in Algorithm 2's order; one reached by an earlier seed's walk starts none of its own.
   auto reached = [&](int t) { return (state[t] & kVisited) != 0; };
   for_each_by_decreasing_circumradius(dv, seeds, reached, [&](int root) {
@@ -44,12 +35,9 @@ RegionWalk walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<co
       if (flags & kVisited) continue;  // reached by an earlier branch
       state[vertex] = flags | kVisited;
       // Gap 2 of labeling/README.md: a stopped vertex ends its branch.
-      if (!(flags & kSeed) && crosses_a_tangent_line(vertex)) continue;
+      if (!(flags & kSeed) && crosses_a_tangent_line(dv, source, vertex)) continue;
       state[vertex] |= kKept;
-      for (int site : dv.triangles[vertex]) {
-        const int s = source[site];
-        if (s == kUnpaired || dv.circumradii[vertex] > dv.circumradii[s]) source[site] = vertex;
-      }
+      pair_samples_with(dv, source, vertex);
       for (int k = 2; k >= 0; --k) {
         const int next = dv.neighbors[vertex][k];
         if (next != kInfinite && (state[next] & (kInRegion | kVisited)) == kInRegion) stack.push_back(next);

@@ -1,28 +1,10 @@
 #include "labeling/label_voronoi_vertices.h"
-#include "labeling/side_of_tangent_line.h"
+#include "labeling/walk_steps.h"
 
 #include <algorithm>
 #include <numeric>
 
 namespace curvebench {
-namespace {
-
-// Definition 5 (label transition rule), applied to `vertex` in the cell of every one of its
-// three samples that already has a finite source vertex (gap 1 in README.md: the test comes
-// before pairing, otherwise the vertex would be its own sample's source and the rule would
-// test nothing). The vertex is inner if it lies strictly across the estimated tangent line
-// of any of them. A vertex exactly on a tangent line is on neither side and stays outer.
-// Samples of unbounded cells are paired with the infinite vertex, whose direction is not
-// one point but the whole wedge of the cell's two rays: they impose no constraint.
-bool crosses_a_tangent_line(const DelaunayVoronoi& dv, const VoronoiLabels& labels, int vertex) {
-  for (int site : dv.triangles[vertex]) {
-    const int source = labels.source_vertex[site];
-    if (source >= 0 && source != vertex && side_of_tangent_line(dv, site, source, vertex) < 0) return true;
-  }
-  return false;
-}
-
-}  // namespace
 
 VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
   const int triangles = dv.triangle_count();
@@ -78,7 +60,7 @@ VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
       // A vertex outside Conv(P) lies outside every polygon on the samples, so no tangent
       // estimate can make it inner: this keeps one poor estimate (at a sharp tip, say) from
       // closing off a whole neighbouring pseudo-concavity before its own walk starts.
-      if (!outside_hull[vertex] && crosses_a_tangent_line(dv, labels, vertex)) {
+      if (!outside_hull[vertex] && crosses_a_tangent_line(dv, labels.source_vertex, vertex)) {
         // Gap 2 (README.md): the walk stops at a vertex that just became inner; walking on
         // would carry the outer label into the interior of the curve.
         labels.inner[vertex] = 1;
@@ -86,17 +68,8 @@ VoronoiLabels label_voronoi_vertices(const DelaunayVoronoi& dv) {
       }
       // Algorithm 1, lines 1-2. Reached from an outer neighbour, a vertex shares two samples
       // with it that are already paired, so at most one sample is unpaired; it takes this
-      // vertex, the first outer vertex found in its cell, as source. A paired sample moves to
-      // this vertex if it is farther from the sample than its source: Lemma 3.2 wants the
-      // source to estimate the pole, the farthest vertex of the cell on the outer side, and a
-      // first vertex hugging the curve (the circumcentre of three samples around a sharp tip)
-      // would tilt the tangent line of Definition 5 by up to a right angle.
-      for (int site : dv.triangles[vertex]) {
-        const int source = labels.source_vertex[site];
-        if (source == kUnpaired || (source >= 0 && dv.circumradii[vertex] > dv.circumradii[source])) {
-          labels.source_vertex[site] = vertex;
-        }
-      }
+      // vertex, the first outer vertex found in its cell, as source (walk_steps.h).
+      pair_samples_with(dv, labels.source_vertex, vertex);
       for (int k = 2; k >= 0; --k) {
         const int next = dv.neighbors[vertex][k];
         if (next != kInfinite && !visited[next] && !labels.inner[next]) stack.push_back(next);

@@ -8,6 +8,7 @@
 
 #include "labeling-holes/curve_edges_per_sample.h"
 #include "labeling-holes/enclosed_samples.h"
+#include "labeling-holes/join_lone_samples_to_the_curve.h"
 #include "labeling-holes/missed_curves_stand_apart.h"
 #include "labeling-holes/open_pockets_closed_at_their_mouths.h"
 #include "labeling-holes/relabel_bridging_ears.h"
@@ -189,6 +190,8 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);
   if (relabel_bridging_ears(dv, labels.inner, curve_edges) > 0) curve_edges = curve_edges_per_sample(dv, labels.inner);
   relabel_inner_vertices_outside_the_hull(dv, labels.inner, curve_edges);
+  // Steps 6 and 7 change nothing while a sample has no curve edge, so the counts still hold.
+  join_lone_samples_to_the_curve(dv, labels.inner, curve_edges);
   return labels;
 }
 

@@ -24,7 +24,9 @@
 // evidence is then left.
 // Without enclosed samples the labels are the paper's, unchanged. Last, the paper's bridges
 // between curves are relabelled: ears through one sample (relabel_bridging_ears.h), then
-// corridors outside the convex hull (relabel_inner_vertices_outside_the_hull.h).
+// corridors outside the convex hull (relabel_inner_vertices_outside_the_hull.h); and samples
+// the curve passes by (a sparse sharp tip cut off by its chord) are joined to it through the
+// triangle at their curve edge (join_lone_samples_to_the_curve.h).
 //
 // In:  the Delaunay/Voronoi arrays of samples of one or more closed curves, nested or not.
 // Out: the paper's VoronoiLabels (sources and counters from label_voronoi_vertices) with

@@ -21,6 +21,7 @@
 #include "generators/outline_import.h"
 #include "generators/random.h"
 #include "labeling-holes/enclosed_samples.h"
+#include "labeling-holes/join_lone_samples_to_the_curve.h"
 #include "labeling-holes/label_voronoi_vertices_with_holes.h"
 #include "labeling-holes/curve_edges_per_sample.h"
 #include "labeling-holes/relabel_bridging_ears.h"
@@ -522,6 +523,71 @@ TEST(LabelingHoles, ThePocketsOfAnSThePaperClosedOffAreOpened) {
     EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), truth) << "seed " << seed;
     EXPECT_NE(sorted(*run("labeling", samples.points).curve_edges), truth) << "seed " << seed;
   }
+}
+
+
+GeneratedInput sparse_outline(const std::string& family, int count, std::uint64_t seed) {
+  GeneratorSettings settings;
+  settings.family = family;
+  settings.sampler = "random";
+  settings.count = count;
+  settings.dense = 4096;
+  settings.seed = seed;
+  return generate(settings);
+}
+
+TEST(LabelingHoles, TheTipsOfASparseStarThePaperCutsOffAreJoined) {
+  // sparse_outlines.json's star at 30 random samples, seeds 1 and 3: the paper's curve cuts a
+  // tip off (the chord 10-12 past sample 11, 15-17 past 16), whose triangle is an EVV outside
+  // the hull and outer, so the tip sample has no curve edge. Step 9
+  // (join_lone_samples_to_the_curve.h) relabels that triangle, and the curve is the star's.
+  for (std::uint64_t seed : {1, 3}) {
+    const GeneratedInput input = sparse_outline("star", 30, seed);
+    const std::vector<Edge> truth = sorted(input.truth.edges);
+    EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), truth) << "seed " << seed;
+    EXPECT_NE(sorted(*run("labeling", input.points).curve_edges), truth) << "seed " << seed;
+  }
+}
+
+TEST(LabelingHoles, ALoneSampleIsJoinedThroughTheTriangleAtItsCurveEdge) {
+  // 12 samples of an ellipse at uneven angles (no four cocircular), a convex polygon whose
+  // triangles are all inner (the paper's labels); one ear a-s-b relabelled outer leaves s lone
+  // and puts a-b on the curve. The step relabels that ear back, and no other triangle.
+  std::vector<Point2> points;
+  for (int k = 0; k < 12; ++k) {
+    const double t = 2 * std::numbers::pi * (k + 0.3 * std::sin(1.7 * k)) / 12;
+    points.push_back({std::cos(t), 0.6 * std::sin(t)});
+  }
+  const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+  const std::vector<std::uint8_t> paper = label_voronoi_vertices(dv).inner;
+  ASSERT_TRUE(std::all_of(paper.begin(), paper.end(), [](std::uint8_t inner) { return inner != 0; }));
+  int ear = -1;
+  for (int t = 0; t < dv.triangle_count() && ear < 0; ++t) {
+    int hull_edges = 0;
+    for (int next : dv.neighbors[t]) hull_edges += next == kInfinite;
+    if (hull_edges == 2) ear = t;
+  }
+  ASSERT_GE(ear, 0);
+  std::vector<std::uint8_t> inner = paper;
+  inner[ear] = 0;
+  EXPECT_EQ(join_lone_samples_to_the_curve(dv, inner, curve_edges_per_sample(dv, inner)), 1);
+  EXPECT_EQ(inner, paper);
+
+  // With a second defect that no lone sample explains (another ear outer, and its neighbour
+  // across the chord too: that chord's ends keep the wrong counts), the labels stay.
+  inner = paper;
+  inner[ear] = 0;
+  int other = -1;
+  for (int t = 0; t < dv.triangle_count() && other < 0; ++t) {
+    if (t == ear || std::find(dv.neighbors[ear].begin(), dv.neighbors[ear].end(), t) != dv.neighbors[ear].end()) continue;
+    const auto& next = dv.neighbors[t];
+    if (std::count(next.begin(), next.end(), kInfinite) == 1) other = t;
+  }
+  ASSERT_GE(other, 0);
+  inner[other] = 0;
+  const std::vector<std::uint8_t> broken = inner;
+  EXPECT_EQ(join_lone_samples_to_the_curve(dv, inner, curve_edges_per_sample(dv, inner)), 0);
+  EXPECT_EQ(inner, broken);
 }
 
 }  // namespace

@@ -479,6 +479,17 @@ TEST(LabelingHoles, SameAsThePaperOnSharpCorners) {
   }
 }
 
+// sparse_outlines.json's inputs: `count` random samples along arc length of `family`.
+GeneratedInput sparse_outline(const std::string& family, int count, std::uint64_t seed) {
+  GeneratorSettings settings;
+  settings.family = family;
+  settings.sampler = "random";
+  settings.count = count;
+  settings.dense = 4096;
+  settings.seed = seed;
+  return generate(settings);
+}
+
 TEST(LabelingHoles, NoHoleJoinsSamplesOfPocketsThePaperClosedOff) {
   // Sparse outlines without holes where the paper closes pockets at their mouths and the walk
   // inside the region joined samples of two pockets into a small closed curve (4 samples
@@ -486,14 +497,8 @@ TEST(LabelingHoles, NoHoleJoinsSamplesOfPocketsThePaperClosedOff) {
   for (const auto& [family, count, seed] : std::vector<std::tuple<std::string, int, std::uint64_t>>{
            {"star", 30, 2}, {"concavities", 30, 6}, {"concavities", 50, 3}, {"concavities", 50, 6},
            {"concavities", 80, 7}}) {
-    GeneratorSettings settings;
-    settings.family = family;
-    settings.sampler = "random";
-    settings.count = count;
-    settings.dense = 4096;
-    settings.seed = seed;
-    expect_same_as_the_paper(generate(settings).points, family + " " + std::to_string(count) + " seed " +
-                                                            std::to_string(seed));
+    expect_same_as_the_paper(sparse_outline(family, count, seed).points,
+                             family + " " + std::to_string(count) + " seed " + std::to_string(seed));
   }
 }
 
@@ -525,16 +530,6 @@ TEST(LabelingHoles, ThePocketsOfAnSThePaperClosedOffAreOpened) {
   }
 }
 
-
-GeneratedInput sparse_outline(const std::string& family, int count, std::uint64_t seed) {
-  GeneratorSettings settings;
-  settings.family = family;
-  settings.sampler = "random";
-  settings.count = count;
-  settings.dense = 4096;
-  settings.seed = seed;
-  return generate(settings);
-}
 
 TEST(LabelingHoles, TheTipsOfASparseStarThePaperCutsOffAreJoined) {
   // sparse_outlines.json's star at 30 random samples, seeds 1 and 3: the paper's curve cuts a

@@ -25,12 +25,14 @@ bool MissedCurvesStandApart::has_a_nearer_sample_off_the_curves(int site, double
 }
 
 bool MissedCurvesStandApart::operator()(const std::vector<Edge>& curves) {
+  std::size_t samples = 0;
   for (const Edge& e : curves) {
     const double length = squared_distance(dv_.sites[e[0]], dv_.sites[e[1]]);
-    for (int site : e) longest_[site] = std::max(longest_[site], length);
+    for (int site : e) {
+      samples += longest_[site] < 0;
+      longest_[site] = std::max(longest_[site], length);
+    }
   }
-  // Every sample on the curves has two edges there, so there are as many samples as edges.
-  const std::size_t samples = curves.size();
   std::size_t apart = 0, near = 0;
   for (const Edge& e : curves) {
     for (int site : e) {

@@ -13,9 +13,11 @@
 // hundred samples), so a curve is taken when most of its samples stand apart: more than half.
 //
 // In:  Delaunay/Voronoi arrays, at construction; per call, `curves`, the Delaunay edges of one
-//      part's boundary, every sample on them with exactly two.
+//      part's boundary (closed curves), or of a pocket's walls (open chains: step 8 of
+//      labeling-holes leaves the mouth out), each sample counted once.
 // Out: true if more than half of the samples on them stand apart: the longer of the sample's
-//      two edges on them is shorter than every Delaunay edge from it to a sample not on them.
+//      edges on them (one or two) is shorter than every Delaunay edge from it to a sample not
+//      on them.
 // An object, so that the per-sample scratch is allocated once for all the parts of a labeling.
 #pragma once
 

@@ -76,7 +76,7 @@ int open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std::vector<s
   std::vector<std::uint8_t> flags(dv.triangle_count(), 0);
   std::vector<int> degree(dv.site_count(), 0);
   std::vector<int> reached, pocket, stack, samples, edges_before;
-  std::vector<Edge> boundary;
+  std::vector<Edge> boundary, walls;
   MissedCurvesStandApart stand_apart(dv);
   int relabelled = 0;
   for (int mouth : mouths) {
@@ -103,19 +103,26 @@ int open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std::vector<s
     }
 
     // The pocket's boundary (its walls and its mouth) must be one closed curve through each of
-    // its samples once, and stand apart like a hole's (missed_curves_stand_apart.h).
+    // its samples once, and its walls, the edges that join the curve when it opens, must stand
+    // apart like a hole's (missed_curves_stand_apart.h). Not the mouth: it is the chord the
+    // paper drew, its triangle's longest edge by construction, and would count its ends
+    // against the pocket; a corridor between two curves has two mouths and few other samples
+    // (disjoint at epsilon 0.8, seed 4: mouths 24-42 and 26-40, walls 24-25-26 and 40-41-42).
     boundary.clear();
+    walls.clear();
     for (int t : pocket) {
       for (int k = 0; k < 3; ++k) {
         const int next = dv.neighbors[t][k];
-        if (next == kInfinite || !(flags[next] & kInPocket))
-          boundary.push_back({dv.triangles[t][(k + 1) % 3], dv.triangles[t][(k + 2) % 3]});
+        if (next != kInfinite && (flags[next] & kInPocket)) continue;
+        const Edge e{dv.triangles[t][(k + 1) % 3], dv.triangles[t][(k + 2) % 3]};
+        boundary.push_back(e);
+        if (is_inner(inner, next)) walls.push_back(e);  // not a curve edge yet: a wall
       }
     }
     bool simple = true;
     for (const Edge& e : boundary) simple = ++degree[e[0]] <= 2 && ++degree[e[1]] <= 2 && simple;
     for (const Edge& e : boundary) degree[e[0]] = degree[e[1]] = 0;
-    bool take = simple && stand_apart(boundary);
+    bool take = simple && stand_apart(walls);
 
     // And afterwards every sample of the pocket has exactly two curve edges, one of them
     // having had none (a wall joins the curve).

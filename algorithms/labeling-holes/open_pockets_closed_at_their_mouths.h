@@ -13,7 +13,8 @@
 // walk would have gone on past the mouth: the mouth vertex is taken outer untested, every
 // sample gets a fresh source vertex (the first vertex reached in its cell, moved to a farther
 // one, Lemma 3.2), and a vertex strictly across a source's tangent line ends its branch
-// (Definition 5). What the walk keeps is relabelled outer only when afterwards every sample
+// (Definition 5). What the walk keeps is relabelled outer only when its walls stand apart
+// (missed_curves_stand_apart.h, the mouth left out) and afterwards every sample
 // of its triangles has exactly two curve edges (the 1-manifold of an epsilon-sample) and a
 // sample that had none gains them: the pocket's walls join the curve, the mouth edge leaves
 // it, and nothing else changes. Otherwise the labels stay as they are.

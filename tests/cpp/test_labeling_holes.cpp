@@ -142,6 +142,14 @@ TEST(LabelingHoles, AnEarBridgingTwoCurvesIsOutside) {
   }
 }
 
+TEST(LabelingHoles, ACorridorBetweenTwoCurvesIsOpenedFromItsMouths) {
+  // success_vs_epsilon.json's disjoint run at epsilon 0.8, seed 4: the paper's labels join two
+  // curves through an inner corridor with two mouths (24-42 and 26-40) and swallow samples 25
+  // and 41. Step 8 walks it from a mouth; its walls stand apart, its mouths do not (they are
+  // the corridor's longest edges), so the test is on the walls only.
+  expect_the_paper_wrong_and_the_extension_exact(0.8, 4);
+}
+
 TEST(LabelingHoles, OfTwoEarsAtOneSampleTheBridgeIsRelabelledAndTheTipKept) {
   // disjoint at epsilon 0.7, seed 4: input sample 8 is the apex of its own curve's ear at a
   // tip (7, 8, 9) and of the bridge (8, 39, 40) to the next curve. Only the bridge, whose two

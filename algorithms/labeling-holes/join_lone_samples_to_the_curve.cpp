@@ -3,8 +3,6 @@
 #include <cmath>
 #include <limits>
 
-#include "labeling-holes/curve_edges_per_sample.h"
-
 namespace curvebench {
 
 int join_lone_samples_to_the_curve(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,

@@ -13,8 +13,8 @@
 //
 // Which triangle: one of s's triangles whose edge opposite s is a curve edge and which holds
 // s's nearest neighbour (on an epsilon-sample the edge to the nearest neighbour is a curve
-// edge, as in Dey and Kumar's NN-crust, SODA 1999; this keeps an outlier next to a curve edge
-// from being pulled in); of several, the one through which the curve detours least
+// edge, as in Dey and Kumar's NN-crust, SODA 1999; an outlier whose nearest sample is no end
+// of such an edge stays out); of several, the one through which the curve detours least
 // (|sa| + |sb| - |ab|), ties by the smaller triangle index. Lone samples are taken in index
 // order, again until none is left or a round joins none: a tip with two lone samples is
 // joined one triangle at a time, the second through an edge the first put on the curve.

@@ -538,7 +538,6 @@ TEST(LabelingHoles, ThePocketsOfAnSThePaperClosedOffAreOpened) {
   }
 }
 
-
 TEST(LabelingHoles, TheTipsOfASparseStarThePaperCutsOffAreJoined) {
   // sparse_outlines.json's star at 30 random samples, seeds 1 and 3: the paper's curve cuts a
   // tip off (the chord 10-12 past sample 11, 15-17 past 16), whose triangle is an EVV outside
@@ -576,8 +575,9 @@ TEST(LabelingHoles, ALoneSampleIsJoinedThroughTheTriangleAtItsCurveEdge) {
   EXPECT_EQ(join_lone_samples_to_the_curve(dv, inner, curve_edges_per_sample(dv, inner)), 1);
   EXPECT_EQ(inner, paper);
 
-  // With a second defect that no lone sample explains (another ear outer, and its neighbour
-  // across the chord too: that chord's ends keep the wrong counts), the labels stay.
+  // With a second defect that no lone sample explains (a triangle with one hull edge, away
+  // from the ear, relabelled outer too: its third corner gets four curve edges), the labels
+  // stay.
   inner = paper;
   inner[ear] = 0;
   int other = -1;

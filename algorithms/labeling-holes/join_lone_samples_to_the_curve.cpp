@@ -2,21 +2,12 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace curvebench {
 
-int join_lone_samples_to_the_curve(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
-                                   const std::vector<int>& curve_edges) {
-  std::vector<int> lone;
-  for (int s = 0; s < dv.site_count(); ++s) {
-    if (dv.site_triangle[s] < 0) continue;  // a duplicate: its twin holds the cell
-    if (curve_edges[s] == 0) {
-      lone.push_back(s);
-    } else if (curve_edges[s] != 2) {
-      return 0;
-    }
-  }
-  if (lone.empty()) return 0;
+std::optional<std::vector<int>> join_lone_samples(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                                                  std::vector<int> lone) {
   auto label = [&](int t) { return t != kInfinite && inner[t] != 0; };
   auto distance = [&](int a, int b) { return std::sqrt(squared_distance(dv.sites[a], dv.sites[b])); };
 
@@ -73,9 +64,25 @@ int join_lone_samples_to_the_curve(const DelaunayVoronoi& dv, std::vector<std::u
     }
     lone.swap(left);
   }
-  if (lone.empty()) return static_cast<int>(joined.size());
+  if (lone.empty()) return joined;
   for (auto it = joined.rbegin(); it != joined.rend(); ++it) inner[*it] ^= 1;
-  return 0;
+  return std::nullopt;
+}
+
+int join_lone_samples_to_the_curve(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                                   const std::vector<int>& curve_edges) {
+  std::vector<int> lone;
+  for (int s = 0; s < dv.site_count(); ++s) {
+    if (dv.site_triangle[s] < 0) continue;  // a duplicate: its twin holds the cell
+    if (curve_edges[s] == 0) {
+      lone.push_back(s);
+    } else if (curve_edges[s] != 2) {
+      return 0;
+    }
+  }
+  if (lone.empty()) return 0;
+  const std::optional<std::vector<int>> joined = join_lone_samples(dv, inner, std::move(lone));
+  return joined ? static_cast<int>(joined->size()) : 0;
 }
 
 }  // namespace curvebench

@@ -31,11 +31,18 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "voronoi/delaunay_voronoi.h"
 
 namespace curvebench {
+
+// The joining alone, for step 8, whose opened pockets can leave a tip lone: `lone` (ascending,
+// each with no curve edge under `inner`) joined as above. Out: the relabelled triangles, one
+// per lone sample, or nullopt with `inner` as it came if one could not be joined.
+std::optional<std::vector<int>> join_lone_samples(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                                                  std::vector<int> lone);
 
 int join_lone_samples_to_the_curve(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
                                    const std::vector<int>& curve_edges);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "labeling-holes/join_lone_samples_to_the_curve.h"
 #include "labeling-holes/missed_curves_stand_apart.h"
 #include "labeling/walk_steps.h"
 
@@ -26,31 +27,49 @@ int curve_edges_at(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& i
   return count;
 }
 
-// Mouths: inner triangles whose edge opposite an enclosed sample c faces an outer vertex (a
-// curve edge a-b) and is the triangle's longest. On an epsilon-sample a curve edge joins
-// consecutive samples, so its diametral disk holds no other sample and it is never the
-// longest edge of a triangle whose third sample lies in that disk's neighbourhood; a pocket's
-// mouth is wider than the way from its ends to the first samples down its walls. The test
-// keeps the thin strokes of a glyph out: there the curve edge is the triangle's shortest, and
-// the enclosed sample across the stroke lies on a hole's curve.
+// Whether the edge of triangle t opposite its corner k is strictly the longest of the three.
+bool is_longest_edge(const DelaunayVoronoi& dv, int t, int k) {
+  const Point2 c = dv.sites[dv.triangles[t][k]], a = dv.sites[dv.triangles[t][(k + 1) % 3]],
+               b = dv.sites[dv.triangles[t][(k + 2) % 3]];
+  return squared_distance(a, b) > std::max(squared_distance(a, c), squared_distance(b, c));
+}
+
+// Whether inner triangle t has a curve edge (facing an outer vertex) that is its longest.
+bool longest_edge_on_the_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, int t) {
+  for (int k = 0; k < 3; ++k) {
+    if (!is_inner(inner, dv.neighbors[t][k]) && is_longest_edge(dv, t, k)) return true;
+  }
+  return false;
+}
+
+// Mouths: inner triangles whose longest edge is a curve edge a-b, in the fan of an enclosed
+// sample or beside a triangle of one (the walk from the mouth goes through those). On an
+// epsilon-sample a curve edge joins consecutive samples, so its diametral disk holds no other
+// sample and it is never the longest edge of a triangle whose third sample lies in that disk's
+// neighbourhood; a pocket's mouth is wider than the way from its ends to the first samples
+// down its walls. The test keeps the thin strokes of a glyph out: there the curve edge is the
+// triangle's shortest, and the enclosed sample across the stroke lies on a hole's curve.
+// Beside, not only in the fan: where the paper's curve crosses a star's valley from one tip's
+// flank to the other's, the mouth's third sample is the first one down a wall, which the walk
+// from outside had paired (its cell holds outer vertices), and the enclosed walls begin one
+// triangle further in (star at 50 random samples, seed 5: mouth 12-25 over sample 24).
 std::vector<int> mouths_in_order(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                  std::span<const int> enclosed_samples) {
   std::vector<int> mouths;
+  auto consider = [&](int t) {
+    if (is_inner(inner, t) && longest_edge_on_the_curve(dv, inner, t)) mouths.push_back(t);
+  };
   for (int site : enclosed_samples) {
     const int first = dv.site_triangle[site];
     int t = first;
     do {
       const int corner = corner_of_site(dv, t, site);
-      const Point2 c = dv.sites[site], a = dv.sites[dv.triangles[t][(corner + 1) % 3]],
-                   b = dv.sites[dv.triangles[t][(corner + 2) % 3]];
-      if (!is_inner(inner, dv.neighbors[t][corner]) &&
-          squared_distance(a, b) > std::max(squared_distance(a, c), squared_distance(b, c))) {
-        mouths.push_back(t);
-      }
+      consider(t);  // its curve edge, if any, is opposite the enclosed sample, whose fan is all inner
+      consider(dv.neighbors[t][corner]);
       t = dv.neighbors[t][(corner + 1) % 3];  // an enclosed sample's fan is closed and all inner
     } while (t != first);
   }
-  // Algorithm 2's heap order, ties by index; a mouth seen from two enclosed samples once.
+  // Algorithm 2's heap order, ties by index; a mouth seen twice once.
   std::sort(mouths.begin(), mouths.end(), [&](int a, int b) {
     return dv.circumradii[a] > dv.circumradii[b] || (dv.circumradii[a] == dv.circumradii[b] && a < b);
   });
@@ -75,8 +94,10 @@ int open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std::vector<s
   std::vector<int> source(dv.site_count(), kUnpaired);
   std::vector<std::uint8_t> flags(dv.triangle_count(), 0);
   std::vector<int> degree(dv.site_count(), 0);
-  std::vector<int> reached, pocket, stack, samples, edges_before;
-  std::vector<Edge> boundary, walls;
+  std::vector<int> reached, pocket, stack, samples, edges_before, lone;
+  std::vector<Edge> boundary, walls, tested, tip_edges;
+  std::vector<double> longest_wall(dv.site_count(), -1.0);  // squared, per sample; -1: no wall
+  auto length = [&](const Edge& e) { return squared_distance(dv.sites[e[0]], dv.sites[e[1]]); };
   MissedCurvesStandApart stand_apart(dv);
   int relabelled = 0;
   for (int mouth : mouths) {
@@ -102,30 +123,63 @@ int open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std::vector<s
       }
     }
 
-    // The pocket's boundary (its walls and its mouth) must be one closed curve through each of
-    // its samples once, and its walls, the edges that join the curve when it opens, must stand
-    // apart like a hole's (missed_curves_stand_apart.h). Not the mouth: it is the chord the
-    // paper drew, its triangle's longest edge by construction, and would count its ends
-    // against the pocket; a corridor between two curves has two mouths and few other samples
-    // (disjoint at epsilon 0.8, seed 4: mouths 24-42 and 26-40, walls 24-25-26 and 40-41-42).
+    // The pocket's boundary must be one closed curve through each of its samples once. Its
+    // walls are the edges that join the curve when it opens; the curve edges on it leave the
+    // curve. Those are its mouths (each its triangle's longest edge, as the chord the paper
+    // drew), a corridor's second mouth (below), and the edges of a tip the mouth cut off (see
+    // the end). The walls must stand apart like a hole's (missed_curves_stand_apart.h), not
+    // counting the mouth, which would count its ends against the pocket.
+    //
+    // A corridor between two curves the paper joined has two mouths and few samples besides
+    // (disjoint at epsilon 0.8, seed 4: mouths 26-40 and 24-42, walls 24-25-26 and 40-41-42);
+    // seen from one, the other need not be its triangle's longest edge. A curve edge is a
+    // second mouth when a wall meets it at each end and it is longer than each of them, and it
+    // must then stand apart with the walls: a chord across a slot has the slot's other wall
+    // nearer its ends than it is long (concavities at 30 random samples, seed 3: from the
+    // mouth 5-10 across the shape's middle to the chord 27-4 of another slot).
     boundary.clear();
     walls.clear();
+    tip_edges.clear();
     for (int t : pocket) {
       for (int k = 0; k < 3; ++k) {
         const int next = dv.neighbors[t][k];
         if (next != kInfinite && (flags[next] & kInPocket)) continue;
         const Edge e{dv.triangles[t][(k + 1) % 3], dv.triangles[t][(k + 2) % 3]};
         boundary.push_back(e);
-        if (is_inner(inner, next)) walls.push_back(e);  // not a curve edge yet: a wall
+        if (is_inner(inner, next)) {
+          walls.push_back(e);  // not a curve edge yet: a wall
+        } else if (!is_longest_edge(dv, t, k)) {
+          tip_edges.push_back(e);  // a curve edge and no mouth: a second mouth or a tip's
+        }
       }
     }
+    for (const Edge& w : walls) {
+      for (int site : w) longest_wall[site] = std::max(longest_wall[site], length(w));
+    }
+    tested = walls;
+    std::erase_if(tip_edges, [&](const Edge& e) {
+      const bool second_mouth = longest_wall[e[0]] >= 0 && longest_wall[e[1]] >= 0 &&
+                                length(e) > std::max(longest_wall[e[0]], longest_wall[e[1]]);
+      if (second_mouth) tested.push_back(e);
+      return second_mouth;
+    });
+    for (const Edge& w : walls) longest_wall[w[0]] = longest_wall[w[1]] = -1.0;
     bool simple = true;
     for (const Edge& e : boundary) simple = ++degree[e[0]] <= 2 && ++degree[e[1]] <= 2 && simple;
     for (const Edge& e : boundary) degree[e[0]] = degree[e[1]] = 0;
-    bool take = simple && stand_apart(walls);
+    bool take = simple && stand_apart(tested);
 
     // And afterwards every sample of the pocket has exactly two curve edges, one of them
-    // having had none (a wall joins the curve).
+    // having had none (a wall joins the curve). A sample with none left is a tip the pocket's
+    // mouth had cut off, attached only through curve edges of the boundary that leave the
+    // curve with the pocket (star at 50 random samples, seed 5: the paper's curve
+    // 12-25-24-23-26 with the mouth 12-25; opened, 24 and 25 have no edge and the curve runs
+    // 22-23-26). It is joined as step 9 joins a lone sample (join_lone_samples_to_the_curve.h),
+    // and the pocket stays closed unless every such sample is. Every curve edge of the
+    // boundary other than a mouth must be such a tip's: a pocket that takes any other curve
+    // edge off the curve is a walk across the shape, whose walls would replace true curve
+    // edges (concavities at 50 random samples, seed 4: from the mouth 35-41 into the next slot
+    // and over 31-32, 26-29 and 28-37).
     if (take) {
       samples.clear();
       for (int t : pocket) samples.insert(samples.end(), dv.triangles[t].begin(), dv.triangles[t].end());
@@ -135,11 +189,18 @@ int open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std::vector<s
       for (int site : samples) edges_before.push_back(curve_edges_at(dv, inner, site));
       for (int t : pocket) inner[t] = 0;
       bool gains = false;
+      lone.clear();
       for (std::size_t i = 0; i < samples.size() && take; ++i) {
-        take = curve_edges_at(dv, inner, samples[i]) == 2;
-        gains = gains || edges_before[i] == 0;
+        const int edges = curve_edges_at(dv, inner, samples[i]);
+        if (edges == 0) lone.push_back(samples[i]);
+        take = edges == 2 || edges == 0;
+        gains = gains || (edges_before[i] == 0 && edges == 2);
       }
-      take = take && gains;
+      for (const Edge& e : tip_edges) {
+        take = take && (std::binary_search(lone.begin(), lone.end(), e[0]) ||
+                        std::binary_search(lone.begin(), lone.end(), e[1]));
+      }
+      take = take && gains && (lone.empty() || join_lone_samples(dv, inner, lone));
       if (!take) {
         for (int t : pocket) inner[t] = 1;
       }

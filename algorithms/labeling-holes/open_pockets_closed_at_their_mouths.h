@@ -5,19 +5,22 @@
 // vertex (Definition 5 against the tangent estimate of an undersampled tip, gap 2 of
 // labeling/README.md), the curve closes across the mouth and every vertex of the pocket is
 // left inner. The pocket's walls show it: their samples have all-inner cells (the evidence of
-// enclosed_samples.h), and the mouth is a curve edge a-b whose inner triangle's third sample
-// is one of them.
+// enclosed_samples.h), and the mouth is a curve edge a-b that is the longest edge of its inner
+// triangle, in or beside the fan of one of them.
 //
 // Rule: from each such mouth vertex, in order of decreasing circumradius (Algorithm 2's
 // heap), Algorithm 1 walks the inner vertices that have an enclosed sample, as the paper's
 // walk would have gone on past the mouth: the mouth vertex is taken outer untested, every
 // sample gets a fresh source vertex (the first vertex reached in its cell, moved to a farther
 // one, Lemma 3.2), and a vertex strictly across a source's tangent line ends its branch
-// (Definition 5). What the walk keeps is relabelled outer only when its walls stand apart
-// (missed_curves_stand_apart.h, the mouth left out) and afterwards every sample
-// of its triangles has exactly two curve edges (the 1-manifold of an epsilon-sample) and a
-// sample that had none gains them: the pocket's walls join the curve, the mouth edge leaves
-// it, and nothing else changes. Otherwise the labels stay as they are.
+// (Definition 5). What the walk keeps is relabelled outer only when its boundary is one
+// closed curve, its walls stand apart (missed_curves_stand_apart.h, the mouth left out, a
+// corridor's second mouth counted in) and afterwards every sample of its triangles has
+// exactly two curve edges (the 1-manifold of an epsilon-sample) and a sample that had none
+// gains them: the pocket's walls join the curve, the mouth edge leaves it. A tip the mouth
+// had cut off, left with no curve edge, is joined again as step 9 joins a lone sample
+// (join_lone_samples_to_the_curve.h); the boundary may take no other curve edge off the
+// curve. Otherwise the labels stay as they are.
 //
 // In:  Delaunay/Voronoi arrays; `inner` per triangle; the enclosed samples (all-inner cells).
 // Out: `inner` with the opened pockets outer; the number of vertices relabelled.

@@ -551,6 +551,32 @@ TEST(LabelingHoles, TheTipsOfASparseStarThePaperCutsOffAreJoined) {
   }
 }
 
+TEST(LabelingHoles, ValleysClosedAtTheirMouthsAreOpenedAndTheTipsTheyCutOffJoined) {
+  // sparse_outlines.json's star at 50 and 80 random samples and rose at 50, where the paper
+  // closes valleys at their mouths and cuts off the tips beside them. Step 8 finds the mouth
+  // beside the valley's enclosed samples (its third sample is the first one down a wall,
+  // which the paper's walk paired), opens the valley, and joins the tip left with no curve
+  // edge as step 9 would: the curve is the outline's own.
+  for (const auto& [family, count, seed] : std::vector<std::tuple<std::string, int, std::uint64_t>>{
+           {"star", 50, 6}, {"star", 80, 4}, {"star", 80, 6}, {"rose", 50, 5}}) {
+    const GeneratedInput input = sparse_outline(family, count, seed);
+    const std::vector<Edge> truth = sorted(input.truth.edges);
+    const std::string what = family + " " + std::to_string(count) + " seed " + std::to_string(seed);
+    EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), truth) << what;
+    EXPECT_NE(sorted(*run("labeling", input.points).curve_edges), truth) << what;
+  }
+}
+
+TEST(LabelingHoles, AWalkFromAMouthThatTakesTrueCurveEdgesOffStaysClosed) {
+  // concavities at 50 random samples, seed 4: the walk from the mouth 35-41 runs into the
+  // next slot and its boundary holds the curve edges 31-32, 26-29 and 28-37, neither mouths
+  // nor a cut-off tip's. At 30 samples, seed 3: from the mouth 5-10 across the shape's middle
+  // to the chord 27-4 of another slot, longer than the walls at its ends but not standing
+  // apart with them. Both keep the paper's labels.
+  expect_same_as_the_paper(sparse_outline("concavities", 50, 4).points, "concavities 50 seed 4");
+  expect_same_as_the_paper(sparse_outline("concavities", 30, 3).points, "concavities 30 seed 3");
+}
+
 TEST(LabelingHoles, ALoneSampleIsJoinedThroughTheTriangleAtItsCurveEdge) {
   // 12 samples of an ellipse at uneven angles (no four cocircular), a convex polygon whose
   // triangles are all inner (the paper's labels); one ear a-s-b relabelled outer leaves s lone

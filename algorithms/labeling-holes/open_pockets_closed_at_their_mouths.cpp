@@ -126,19 +126,23 @@ int open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std::vector<s
     // The pocket's boundary must be one closed curve through each of its samples once. Its
     // walls are the edges that join the curve when it opens; the curve edges on it leave the
     // curve. Those are its mouths (each its triangle's longest edge, as the chord the paper
-    // drew), a corridor's second mouth (below), and the edges of a tip the mouth cut off (see
-    // the end). The walls must stand apart like a hole's (missed_curves_stand_apart.h), not
-    // counting the mouth, which would count its ends against the pocket.
+    // drew), a corridor's second mouth, and the edges of a tip the mouth cut off (see the
+    // end). Every edge of the boundary but the mouths must stand apart like a hole's
+    // (missed_curves_stand_apart.h): the mouth would count its ends against the pocket, while
+    // a tip's samples are on the curve once joined, and counted off it they would stand
+    // beside the walls (the star at 30 random samples, seed 4: the tip samples 0 and 1 beside
+    // the wall 2-3).
     //
     // A corridor between two curves the paper joined has two mouths and few samples besides
     // (disjoint at epsilon 0.8, seed 4: mouths 26-40 and 24-42, walls 24-25-26 and 40-41-42);
     // seen from one, the other need not be its triangle's longest edge. A curve edge is a
-    // second mouth when a wall meets it at each end and it is longer than each of them, and it
-    // must then stand apart with the walls: a chord across a slot has the slot's other wall
-    // nearer its ends than it is long (concavities at 30 random samples, seed 3: from the
-    // mouth 5-10 across the shape's middle to the chord 27-4 of another slot).
+    // second mouth when a wall meets it at each end and it is longer than each of them. Like
+    // the walls it must stand apart: a chord across another slot does not, that slot's other
+    // wall lying nearer its ends than it is long (concavities at 30 random samples, seed 3:
+    // from the mouth 5-10 across the shape's middle to the chord 27-4).
     boundary.clear();
     walls.clear();
+    tested.clear();
     tip_edges.clear();
     for (int t : pocket) {
       for (int k = 0; k < 3; ++k) {
@@ -148,20 +152,20 @@ int open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std::vector<s
         boundary.push_back(e);
         if (is_inner(inner, next)) {
           walls.push_back(e);  // not a curve edge yet: a wall
-        } else if (!is_longest_edge(dv, t, k)) {
+        } else if (is_longest_edge(dv, t, k)) {
+          continue;  // a mouth, not tested
+        } else {
           tip_edges.push_back(e);  // a curve edge and no mouth: a second mouth or a tip's
         }
+        tested.push_back(e);
       }
     }
     for (const Edge& w : walls) {
       for (int site : w) longest_wall[site] = std::max(longest_wall[site], length(w));
     }
-    tested = walls;
-    std::erase_if(tip_edges, [&](const Edge& e) {
-      const bool second_mouth = longest_wall[e[0]] >= 0 && longest_wall[e[1]] >= 0 &&
-                                length(e) > std::max(longest_wall[e[0]], longest_wall[e[1]]);
-      if (second_mouth) tested.push_back(e);
-      return second_mouth;
+    std::erase_if(tip_edges, [&](const Edge& e) {  // the second mouths
+      return longest_wall[e[0]] >= 0 && longest_wall[e[1]] >= 0 &&
+             length(e) > std::max(longest_wall[e[0]], longest_wall[e[1]]);
     });
     for (const Edge& w : walls) longest_wall[w[0]] = longest_wall[w[1]] = -1.0;
     bool simple = true;

@@ -145,8 +145,9 @@ TEST(LabelingHoles, AnEarBridgingTwoCurvesIsOutside) {
 TEST(LabelingHoles, ACorridorBetweenTwoCurvesIsOpenedFromItsMouths) {
   // success_vs_epsilon.json's disjoint run at epsilon 0.8, seed 4: the paper's labels join two
   // curves through an inner corridor with two mouths (24-42 and 26-40) and swallow samples 25
-  // and 41. Step 8 walks it from a mouth; its walls stand apart, its mouths do not (they are
-  // the corridor's longest edges), so the test is on the walls only.
+  // and 41. Step 8 walks it from the mouth 26-40, its triangle's longest edge, which the
+  // stand-apart test leaves out; 24-42, longer than the walls at its ends, is a second mouth
+  // and stands apart with them.
   expect_the_paper_wrong_and_the_extension_exact(0.8, 4);
 }
 

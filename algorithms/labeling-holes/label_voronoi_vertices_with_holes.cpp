@@ -1,8 +1,6 @@
 #include "labeling-holes/label_voronoi_vertices_with_holes.h"
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -167,10 +165,7 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     return first_level;
   };
   // Without enclosed samples the paper's walks reached every sample's curve.
-  const bool dbg = std::getenv("CB_DBG");
-  if (dbg) { std::fprintf(stderr, "enclosed:"); for (int s : enclosed) std::fprintf(stderr, " %d", s); std::fprintf(stderr, "\n"); }
   if (!enclosed.empty() && take_missed_curves() && !enclosed.empty()) {
-    if (dbg) { std::fprintf(stderr, "step 8 with enclosed:"); for (int s : enclosed) std::fprintf(stderr, " %d", s); std::fprintf(stderr, "\n"); }
     std::vector<std::uint8_t> before_pockets = labels.inner;
     if (open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed) > 0) {
       // Step 8 opened pockets: their walls are on the curve, and the levels run again for the
@@ -181,7 +176,6 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
       std::vector<int> evidence = std::move(enclosed);
       enclosed = samples_enclosed_by_region(dv, labels.inner, region_vertices);
       take_missed_curves();
-      if (dbg) { std::fprintf(stderr, "after pockets+levels enclosed:"); for (int s : enclosed) std::fprintf(stderr, " %d", s); std::fprintf(stderr, "\n"); }
       if (!enclosed.empty()) {
         labels.inner = std::move(before_pockets);
         enclosed = std::move(evidence);
@@ -191,7 +185,6 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   // The loop stops with evidence left only where no part was taken: those samples' cells lie
   // in the last region, all of one label, so they have no curve edge, and both repairs below
   // leave the labels as they are unless every sample has two (steps 6 and 7 of the rule).
-  if (dbg) std::fprintf(stderr, "evidence left %zu\n", enclosed.size());
   if (!enclosed.empty()) return labels;
   // One count of curve edges serves both repairs unless the first changes the labels.
   std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);

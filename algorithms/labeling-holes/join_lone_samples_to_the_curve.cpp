@@ -1,5 +1,6 @@
 #include "labeling-holes/join_lone_samples_to_the_curve.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -13,7 +14,8 @@ std::optional<std::vector<int>> join_lone_samples(const DelaunayVoronoi& dv, std
 
   // The triangle joining `s` to the curve, or kInfinite if none: counter-clockwise around s
   // from site_triangle, which for a hull site is the first of its open fan.
-  auto joining_triangle = [&](int s) {
+  auto is_lone = [&](int site) { return std::binary_search(lone.begin(), lone.end(), site); };
+  auto joining_triangle = [&](int s, bool past_lone_neighbours) {
     int nearest = -1;
     double nearest_squared = std::numeric_limits<double>::infinity();
     const int first = dv.site_triangle[s];
@@ -21,7 +23,8 @@ std::optional<std::vector<int>> join_lone_samples(const DelaunayVoronoi& dv, std
     do {
       for (int other : dv.triangles[t]) {
         const double d = squared_distance(dv.sites[s], dv.sites[other]);
-        if (other != s && (d < nearest_squared || (d == nearest_squared && other < nearest))) {
+        if (other == s || (past_lone_neighbours && is_lone(other))) continue;
+        if (d < nearest_squared || (d == nearest_squared && other < nearest)) {
           nearest = other;
           nearest_squared = d;
         }
@@ -48,12 +51,15 @@ std::optional<std::vector<int>> join_lone_samples(const DelaunayVoronoi& dv, std
     return best;
   };
 
+  // One round over the lone samples in index order; with `past_lone_neighbours`, a sample's
+  // nearest neighbour is taken among the samples that are not lone, and the round stops at
+  // the first join. True when it joined one.
   std::vector<int> joined;
-  for (bool progress = true; progress && !lone.empty();) {
-    progress = false;
+  auto round = [&](bool past_lone_neighbours) {
     std::vector<int> left;
+    bool progress = false;
     for (int s : lone) {
-      const int t = joining_triangle(s);
+      const int t = (progress && past_lone_neighbours) ? kInfinite : joining_triangle(s, past_lone_neighbours);
       if (t == kInfinite) {
         left.push_back(s);
         continue;
@@ -63,7 +69,11 @@ std::optional<std::vector<int>> join_lone_samples(const DelaunayVoronoi& dv, std
       progress = true;
     }
     lone.swap(left);
-  }
+    return progress;
+  };
+  // A round past lone neighbours only when a strict one joined none: a tip cut off with two or
+  // more samples, each the other's nearest neighbour (see the header).
+  for (bool progress = true; progress && !lone.empty();) progress = round(false) || round(true);
   if (lone.empty()) return joined;
   for (auto it = joined.rbegin(); it != joined.rend(); ++it) inner[*it] ^= 1;
   return std::nullopt;

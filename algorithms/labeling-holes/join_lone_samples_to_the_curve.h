@@ -17,7 +17,13 @@
 // of such an edge stays out); of several, the one through which the curve detours least
 // (|sa| + |sb| - |ab|), ties by the smaller triangle index. Lone samples are taken in index
 // order, again until none is left or a round joins none: a tip with two lone samples is
-// joined one triangle at a time, the second through an edge the first put on the curve.
+// joined one triangle at a time, the second through an edge the first put on the curve. When
+// a round joins none because each lone sample's nearest neighbour is lone too (a tip of two
+// or three samples cut off together, each the other's nearest), the first lone sample that
+// can be joined through its nearest sample that is not lone is, and the rounds go on: the
+// nearest sample on the curve stands in for the nearest one (sparse_outlines.json's star at 30
+// random samples, seed 6; the glyph outlines' tips at 100-1600 points). It can pick a sample of
+// another stroke where two pass close (an `R` at 800 points, seed 1).
 //
 // Only where lone samples are all that is wrong: every other sample must have exactly two
 // curve edges before, and every lone sample must be joined; otherwise the labels stay as they

@@ -218,8 +218,10 @@ TEST(LabelingHoles, TheHoleOfAnAThatPinchesItsOuterStrokeIsItsOwnCurve) {
 TEST(LabelingHoles, NoPinchInsideAPocketThePaperClosedOff) {
   // holes.json's G at 100 points, seed 2: the paper closes the G's pocket at its mouth, so
   // the pocket walls are enclosed samples and the walk runs down the pocket; the crossbar
-  // would come out as a pinched hole. The taken curves would not hold the walls' samples, so
-  // the extension keeps the paper's output.
+  // would come out as a pinched hole, a closed curve of samples the paper left enclosed. The
+  // taken curves would not hold the walls' samples, so the levels take no pinch; step 8 then
+  // opens the pocket from its mouth and joins the tips it cut off, and no closed curve of
+  // the output is made of enclosed samples alone.
   constexpr const char* kGlyphG =
       "0.59515625 0.1040625\n0.59515625 0.29984375\n0.4340625 0.29984375\n0.4340625 0.3809375\n"
       "0.6928125 0.3809375\n0.6928125 0.0678125\n0.6328125 0.032265625\n0.566875 0.0065625\n"
@@ -232,7 +234,25 @@ TEST(LabelingHoles, NoPinchInsideAPocketThePaperClosedOff) {
       "0.1769140625 0.234453125\n0.22718750000000001 0.1415625\n0.3110546875 0.085546875\n"
       "0.42828125 0.066875\n0.47765625 0.06914062500000001\n0.52140625 0.0759375\n0.560390625 0.08750000000000001\n";
   const SampledScene samples = glyph_sample(kGlyphG, 100, 2);
-  EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("labeling", samples.points).curve_edges));
+  const DelaunayVoronoi dv = build_delaunay_voronoi(samples.points);
+  const VoronoiLabels paper = label_voronoi_vertices(dv);
+  std::vector<bool> enclosed(samples.points.size(), false);
+  for (int s = 0; s < dv.site_count(); ++s) enclosed[dv.input_of_site[s]] = paper.source_vertex[s] == kUnpaired;
+  const std::vector<Edge> edges = *run("labeling-holes", samples.points).curve_edges;
+  EXPECT_NE(sorted(edges), sorted(*run("labeling", samples.points).curve_edges));
+  // Components of the curve through its edges, each checked for a sample the paper paired.
+  std::vector<int> component(samples.points.size());
+  std::iota(component.begin(), component.end(), 0);
+  auto root = [&](int x) {
+    while (component[x] != x) x = component[x] = component[component[x]];
+    return x;
+  };
+  for (const Edge& e : edges) component[root(e[0])] = root(e[1]);
+  std::vector<bool> has_a_paired_sample(samples.points.size(), false);
+  for (const Edge& e : edges) {
+    for (int v : e) has_a_paired_sample[root(v)] = has_a_paired_sample[root(v)] || !enclosed[v];
+  }
+  for (const Edge& e : edges) EXPECT_TRUE(has_a_paired_sample[root(e[0])]) << "a closed curve of enclosed samples at " << e[0];
 }
 
 TEST(LabelingHoles, NoEarIsRelabelledAtAStrokePinchedAtOneSampleOrAtASliver) {
@@ -484,8 +504,16 @@ TEST(LabelingHoles, SameAsThePaperOnSharpCorners) {
   expect_same_as_the_paper(sample_polygon_evenly({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 200), "square");
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     expect_same_as_the_paper(arc_length_sample(l_shape_scene(0.6), 120, true, seed).points, "L shape");
+  }
+  // The star at 80 random samples: the paper is exact at seed 3 and leaves a valley closed at
+  // seed 2, where the extension keeps its labels. At seed 1 it cuts off samples whose nearest
+  // neighbours are cut off too, which the joining reaches through their nearest samples on the
+  // curve (ATipCutOffWithTwoSamplesIsJoinedThroughTheNearestSampleOnTheCurve): the star's own.
+  for (std::uint64_t seed = 2; seed <= 3; ++seed) {
     expect_same_as_the_paper(arc_length_sample(star_scene(5, 0.45), 80, true, seed).points, "star, 80 random samples");
   }
+  const SampledScene star = arc_length_sample(star_scene(5, 0.45), 80, true, 1);
+  EXPECT_EQ(sorted(*run("labeling-holes", star.points).curve_edges), sorted(star.true_edges));
 }
 
 // sparse_outlines.json's inputs: `count` random samples along arc length of `family`.
@@ -576,6 +604,19 @@ TEST(LabelingHoles, AWalkFromAMouthThatTakesTrueCurveEdgesOffStaysClosed) {
   // apart with them. Both keep the paper's labels.
   expect_same_as_the_paper(sparse_outline("concavities", 50, 4).points, "concavities 50 seed 4");
   expect_same_as_the_paper(sparse_outline("concavities", 30, 3).points, "concavities 30 seed 3");
+}
+
+TEST(LabelingHoles, ATipCutOffWithTwoSamplesIsJoinedThroughTheNearestSampleOnTheCurve) {
+  // sparse_outlines.json's star at 30 random samples, seed 6, and L shape at 30, seed 7: the
+  // paper's chord cuts off a tip of two samples, each the other's nearest neighbour, so no
+  // round of step 9 joins either through its nearest neighbour. The first is joined through
+  // its nearest sample on the curve, the second then through the first.
+  for (const auto& [family, seed] : std::vector<std::pair<std::string, std::uint64_t>>{{"star", 6}, {"l-shape", 7}}) {
+    const GeneratedInput input = sparse_outline(family, 30, seed);
+    const std::vector<Edge> truth = sorted(input.truth.edges);
+    EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), truth) << family;
+    EXPECT_NE(sorted(*run("labeling", input.points).curve_edges), truth) << family;
+  }
 }
 
 TEST(LabelingHoles, ALoneSampleIsJoinedThroughTheTriangleAtItsCurveEdge) {

@@ -12,9 +12,9 @@ std::optional<std::vector<int>> join_lone_samples(const DelaunayVoronoi& dv, std
   auto label = [&](int t) { return t != kInfinite && inner[t] != 0; };
   auto distance = [&](int a, int b) { return std::sqrt(squared_distance(dv.sites[a], dv.sites[b])); };
 
+  auto is_lone = [&](int site) { return std::binary_search(lone.begin(), lone.end(), site); };
   // The triangle joining `s` to the curve, or kInfinite if none: counter-clockwise around s
   // from site_triangle, which for a hull site is the first of its open fan.
-  auto is_lone = [&](int site) { return std::binary_search(lone.begin(), lone.end(), site); };
   auto joining_triangle = [&](int s, bool past_lone_neighbours) {
     int nearest = -1;
     double nearest_squared = std::numeric_limits<double>::infinity();

@@ -15,9 +15,9 @@
 // one, Lemma 3.2), and a vertex strictly across a source's tangent line ends its branch
 // (Definition 5). What the walk keeps is relabelled outer only when its boundary is one
 // closed curve, that curve but its mouths stands apart (missed_curves_stand_apart.h; a
-// corridor has a second mouth, which is tested) and afterwards every sample of its triangles has
-// exactly two curve edges (the 1-manifold of an epsilon-sample) and a sample that had none
-// gains them: the pocket's walls join the curve, the mouth edge leaves it. A tip the mouth
+// corridor's second mouth is tested) and afterwards every sample of its triangles has exactly
+// two curve edges (the 1-manifold of an epsilon-sample) and a sample that had none gains
+// them: the pocket's walls join the curve, the mouth edge leaves it. A tip the mouth
 // had cut off, left with no curve edge, is joined again as step 9 joins a lone sample
 // (join_lone_samples_to_the_curve.h); the boundary may take no other curve edge off the
 // curve. Otherwise the labels stay as they are.

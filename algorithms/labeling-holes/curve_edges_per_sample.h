@@ -16,4 +16,32 @@ namespace curvebench {
 
 std::vector<int> curve_edges_per_sample(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner);
 
+// visit(end, t, next) for each curve edge site-end at one sample (with a cell: site_triangle
+// >= 0), t and next the triangles on its two sides (next is kInfinite for a hull edge): a walk
+// around its fan, counter-clockwise from site_triangle (for a hull site the first triangle of
+// its open fan).
+template <class Visit>
+void for_each_curve_edge_at(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, int site,
+                            Visit&& visit) {
+  const int first = dv.site_triangle[site];
+  const int first_corner = corner_of_site(dv, first, site);
+  if (dv.neighbors[first][(first_corner + 2) % 3] == kInfinite && inner[first]) {
+    visit(dv.triangles[first][(first_corner + 1) % 3], first, kInfinite);
+  }
+  int t = first;
+  do {
+    const int corner = corner_of_site(dv, t, site);
+    const int next = dv.neighbors[t][(corner + 1) % 3];
+    if (inner[t] != (next != kInfinite && inner[next] != 0)) visit(dv.triangles[t][(corner + 2) % 3], t, next);
+    t = next;
+  } while (t != kInfinite && t != first);
+}
+
+// The count of one sample.
+inline int curve_edges_at(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, int site) {
+  int count = 0;
+  for_each_curve_edge_at(dv, inner, site, [&](int, int, int) { ++count; });
+  return count;
+}
+
 }  // namespace curvebench

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <numeric>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "labeling-holes/open_pockets_closed_at_their_mouths.h"
 #include "labeling-holes/relabel_bridging_ears.h"
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
+#include "labeling-holes/split_curves_joined_across_a_corridor.h"
 #include "labeling-holes/walk_region_from_its_boundary.h"
 
 namespace curvebench {
@@ -183,15 +185,44 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     }
   }
   // The loop stops with evidence left only where no part was taken: those samples' cells lie
-  // in the last region, all of one label, so they have no curve edge, and both repairs below
-  // leave the labels as they are unless every sample has two (steps 6 and 7 of the rule).
-  if (!enclosed.empty()) return labels;
+  // in the last region, all of one label, so they have no curve edge. Where a corridor between
+  // two curves swallowed them, step 10 opens it from the triangles around them. As pinches and
+  // step 8's pockets, the corridors stand only if then every enclosed sample is on the curve;
+  // otherwise the repairs below would leave the labels as they are unless every sample has
+  // two (steps 6 and 7 of the rule), and step 9 joins no enclosed sample.
+  if (!enclosed.empty()) {
+    std::vector<int> around;
+    for (int site : enclosed) {
+      const int first = dv.site_triangle[site];
+      int t = first;
+      do {  // an enclosed sample's fan is closed and all inner
+        around.push_back(t);
+        t = dv.neighbors[t][(corner_of_site(dv, t, site) + 1) % 3];
+      } while (t != first);
+    }
+    std::vector<std::uint8_t> before_corridors = labels.inner;
+    if (split_curves_joined_across_a_corridor(dv, labels.inner, around) == 0) return labels;
+    const std::vector<std::uint8_t>& inner = labels.inner;
+    if (std::any_of(enclosed.begin(), enclosed.end(), [&](int site) { return curve_edges_at(dv, inner, site) == 0; })) {
+      labels.inner = std::move(before_corridors);
+      return labels;
+    }
+  }
   // One count of curve edges serves both repairs unless the first changes the labels.
   std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);
   if (relabel_bridging_ears(dv, labels.inner, curve_edges) > 0) curve_edges = curve_edges_per_sample(dv, labels.inner);
   relabel_inner_vertices_outside_the_hull(dv, labels.inner, curve_edges);
   // Steps 6 and 7 change nothing while a sample has no curve edge, so the counts still hold.
-  join_lone_samples_to_the_curve(dv, labels.inner, curve_edges);
+  if (join_lone_samples_to_the_curve(dv, labels.inner, curve_edges) > 0) {
+    curve_edges = curve_edges_per_sample(dv, labels.inner);
+  }
+  // Corridors without swallowed samples, on a 1-manifold: from every triangle.
+  for (int s = 0; s < dv.site_count(); ++s) {
+    if (dv.site_triangle[s] >= 0 && curve_edges[s] != 2) return labels;  // a duplicate's twin holds its cell
+  }
+  std::vector<int> every_triangle(dv.triangle_count());
+  std::iota(every_triangle.begin(), every_triangle.end(), 0);
+  split_curves_joined_across_a_corridor(dv, labels.inner, every_triangle);
   return labels;
 }
 

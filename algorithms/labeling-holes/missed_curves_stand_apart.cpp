@@ -24,27 +24,36 @@ bool MissedCurvesStandApart::has_a_nearer_sample_off_the_curves(int site, double
   return false;
 }
 
-bool MissedCurvesStandApart::operator()(const std::vector<Edge>& curves) {
+bool MissedCurvesStandApart::operator()(const std::vector<Edge>& curves, const std::vector<Edge>& continuations) {
+  for (const Edge& e : continuations) {
+    for (int site : e) {
+      longest_[site] = std::max(longest_[site], 0.0);  // on the curves, with no edge on them yet
+      counted_[site] = kContinuation;
+    }
+  }
   std::size_t samples = 0;
   for (const Edge& e : curves) {
     const double length = squared_distance(dv_.sites[e[0]], dv_.sites[e[1]]);
     for (int site : e) {
-      samples += longest_[site] < 0;
+      samples += counted_[site] != kTested;
+      counted_[site] = kTested;
       longest_[site] = std::max(longest_[site], length);
     }
   }
   std::size_t apart = 0, near = 0;
   for (const Edge& e : curves) {
     for (int site : e) {
-      if (counted_[site] || 2 * apart > samples || 2 * near >= samples) continue;  // counted, or decided
-      counted_[site] = 1;
+      if (counted_[site] == kCounted || 2 * apart > samples || 2 * near >= samples) continue;  // counted, or decided
+      counted_[site] = kCounted;
       ++(has_a_nearer_sample_off_the_curves(site, longest_[site]) ? near : apart);
     }
   }
-  for (const Edge& e : curves) {
-    for (int site : e) {
-      longest_[site] = -1.0;
-      counted_[site] = 0;
+  for (const auto* edges : {&curves, &continuations}) {
+    for (const Edge& e : *edges) {
+      for (int site : e) {
+        longest_[site] = -1.0;
+        counted_[site] = kOff;
+      }
     }
   }
   return 2 * apart > samples;

@@ -31,13 +31,15 @@ namespace curvebench {
 class MissedCurvesStandApart {
  public:
   explicit MissedCurvesStandApart(const DelaunayVoronoi& dv);
-  bool operator()(const std::vector<Edge>& curves);
+  bool operator()(const std::vector<Edge>& curves, const std::vector<Edge>& continuations = {});
 
  private:
   bool has_a_nearer_sample_off_the_curves(int site, double squared_edge) const;
 
   const DelaunayVoronoi& dv_;
   std::vector<double> longest_;  // per sample: its longer edge on the curves (squared), -1 off them
+  // Per sample: off the curves, at the end of a continuation only, on the curves, counted.
+  enum : std::uint8_t { kOff, kContinuation, kTested, kCounted };
   std::vector<std::uint8_t> counted_;
 };
 

@@ -65,6 +65,15 @@ bool angle_sum_acute(Point2 r, Point2 s, Point2 p, Point2 q) {
 
 }  // namespace
 
+bool is_one_step_crust_edge(const DelaunayVoronoi& dv, int t, int k) {
+  const auto& tri = dv.triangles[t];
+  const Point2 r = dv.sites[tri[k]], p = dv.sites[tri[(k + 1) % 3]], q = dv.sites[tri[(k + 2) % 3]];
+  const int other = dv.neighbors[t][k];
+  if (other == kInfinite) return acute(r, p, q);
+  const int j = dv.neighbors[other][0] == t ? 0 : (dv.neighbors[other][1] == t ? 1 : 2);
+  return angle_sum_acute(r, dv.sites[dv.triangles[other][j]], p, q);
+}
+
 OneStepCrust one_step_crust(const DelaunayVoronoi& dv) {
   const int triangles = dv.triangle_count();
   OneStepCrust result;
@@ -74,17 +83,13 @@ OneStepCrust one_step_crust(const DelaunayVoronoi& dv) {
     for (int k = 0; k < 3; ++k) {
       const int other = dv.neighbors[t][k];
       if (other != kInfinite && other < t) continue;  // decided from the other side
-      const int r = tri[k], p = tri[(k + 1) % 3], q = tri[(k + 2) % 3];
-      bool crust;
-      if (other == kInfinite) {
-        crust = acute(dv.sites[r], dv.sites[p], dv.sites[q]);
-      } else {
+      const bool crust = is_one_step_crust_edge(dv, t, k);
+      result.is_crust[t][k] = crust;
+      if (other != kInfinite) {
         const int j = dv.neighbors[other][0] == t ? 0 : (dv.neighbors[other][1] == t ? 1 : 2);
-        crust = angle_sum_acute(dv.sites[r], dv.sites[dv.triangles[other][j]], dv.sites[p], dv.sites[q]);
         result.is_crust[other][j] = crust;
       }
-      result.is_crust[t][k] = crust;
-      if (crust) result.curve.push_back(make_edge(p, q));
+      if (crust) result.curve.push_back(make_edge(tri[(k + 1) % 3], tri[(k + 2) % 3]));
     }
   }
   return result;

@@ -36,4 +36,8 @@ struct OneStepCrust {
 
 OneStepCrust one_step_crust(const DelaunayVoronoi& dv);
 
+// The test above for one edge: whether the Delaunay edge opposite corner k of triangle t is a
+// crust edge.
+bool is_one_step_crust_edge(const DelaunayVoronoi& dv, int t, int k);
+
 }  // namespace curvebench

@@ -23,9 +23,11 @@
 #include "labeling-holes/enclosed_samples.h"
 #include "labeling-holes/join_lone_samples_to_the_curve.h"
 #include "labeling-holes/label_voronoi_vertices_with_holes.h"
+#include "labeling-holes/open_pockets_closed_at_their_mouths.h"
 #include "labeling-holes/curve_edges_per_sample.h"
 #include "labeling-holes/relabel_bridging_ears.h"
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
+#include "labeling-holes/split_curves_joined_across_a_corridor.h"
 #include "labeling/label_voronoi_vertices.h"
 #include "generators/samplers.h"
 #include "test_support.h"
@@ -149,6 +151,74 @@ TEST(LabelingHoles, ACorridorBetweenTwoCurvesIsOpenedFromItsMouths) {
   // stand-apart test leaves out; 24-42, longer than the walls at its ends, is a second mouth
   // and stands apart with them.
   expect_the_paper_wrong_and_the_extension_exact(0.8, 4);
+}
+
+TEST(LabelingHoles, APocketsWallsStandApartFromTheCurveTheyContinue) {
+  // disjoint at epsilon 0.9, seed 4: the corridor 19-31 / 20-29 over sample 30, walked from
+  // the mouth (20, 30, 29), has the short walls 29-30-31 and 19-20. Their end samples lie
+  // nearer to their own curve's next samples (18 beside 19, 28 beside 29) than the walls are
+  // long; those neighbours continue the curve the walls join and count as on it. Step 8 alone
+  // on the paper's labels opens the corridor's three triangles (step 10 would open it too).
+  expect_the_paper_wrong_and_the_extension_exact(0.9, 4);
+  const GeneratedInput input = disjoint_curves(0.9, 4);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(input.points);
+  VoronoiLabels labels = label_voronoi_vertices(dv);
+  std::vector<int> enclosed;
+  for (int s = 0; s < dv.site_count(); ++s) {
+    if (labels.source_vertex[s] == kUnpaired && dv.site_triangle[s] >= 0) enclosed.push_back(s);
+  }
+  ASSERT_EQ(enclosed.size(), 1u);
+  EXPECT_EQ(dv.input_of_site[enclosed[0]], 30);
+  const std::vector<std::uint8_t> paper = labels.inner;
+  EXPECT_EQ(open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed), 3);
+  std::vector<std::vector<int>> opened;
+  for (int t = 0; t < dv.triangle_count(); ++t) {
+    if (labels.inner[t] == paper[t]) continue;
+    std::vector<int> corners;
+    for (int site : dv.triangles[t]) corners.push_back(dv.input_of_site[site]);
+    std::sort(corners.begin(), corners.end());
+    opened.push_back(corners);
+  }
+  std::sort(opened.begin(), opened.end());
+  EXPECT_EQ(opened, (std::vector<std::vector<int>>{{19, 20, 30}, {19, 30, 31}, {20, 29, 30}}));
+}
+
+TEST(LabelingHoles, CurvesJoinedAcrossACorridorAreSplitWhereTheCrustReadsItAsOutside) {
+  // disjoint at epsilon 1.0: at seed 3 the corridor (2, 23, 22), (2, 22, 3) swallows no sample
+  // and every sample has two curve edges; at seed 5 it swallows samples 5 and 26, and step 8's
+  // walk from the mouth (5, 25, 6) stops across 5-26 (split_curves_joined_across_a_corridor.h).
+  for (std::uint64_t seed : {3, 5}) expect_the_paper_wrong_and_the_extension_exact(1.0, seed);
+}
+
+TEST(LabelingHoles, NoCorridorWhereTheCrustAgreesAndTheSameFromEitherTriangleOfOne) {
+  // On an epsilon-sample the paper gets right, a corridor grown across the edges the crust
+  // rejects is a whole interior, bounded by curve edges only: nothing changes.
+  const GeneratedInput input = disjoint_curves(0.3, 1);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(input.points);
+  VoronoiLabels labels = label_voronoi_vertices(dv);
+  const std::vector<std::uint8_t> paper = labels.inner;
+  std::vector<int> every_triangle(dv.triangle_count());
+  std::iota(every_triangle.begin(), every_triangle.end(), 0);
+  EXPECT_EQ(split_curves_joined_across_a_corridor(dv, labels.inner, every_triangle), 0);
+  EXPECT_EQ(labels.inner, paper);
+  // The corridor of seed 3 at epsilon 1.0 from each of its two triangles: two relabelled.
+  const GeneratedInput joined = disjoint_curves(1.0, 3);
+  const DelaunayVoronoi joined_dv = build_delaunay_voronoi(joined.points);
+  const VoronoiLabels joined_labels = label_voronoi_vertices_with_holes(joined_dv);
+  std::vector<int> corridor;
+  for (int t = 0; t < joined_dv.triangle_count(); ++t) {
+    std::vector<int> corners;
+    for (int site : joined_dv.triangles[t]) corners.push_back(joined_dv.input_of_site[site]);
+    std::sort(corners.begin(), corners.end());
+    if (corners == std::vector<int>{2, 22, 23} || corners == std::vector<int>{2, 3, 22}) corridor.push_back(t);
+  }
+  ASSERT_EQ(corridor.size(), 2u);
+  for (int seed : corridor) {
+    std::vector<std::uint8_t> inner = joined_labels.inner;
+    for (int t : corridor) inner[t] = 1;  // the labels before step 10
+    EXPECT_EQ(split_curves_joined_across_a_corridor(joined_dv, inner, std::vector<int>{seed}), 2);
+    EXPECT_EQ(inner, joined_labels.inner);
+  }
 }
 
 TEST(LabelingHoles, OfTwoEarsAtOneSampleTheBridgeIsRelabelledAndTheTipKept) {
@@ -601,9 +671,21 @@ TEST(LabelingHoles, AWalkFromAMouthThatTakesTrueCurveEdgesOffStaysClosed) {
   // next slot and its boundary holds the curve edges 31-32, 26-29 and 28-37, neither mouths
   // nor a cut-off tip's. At 30 samples, seed 3: from the mouth 5-10 across the shape's middle
   // to the chord 27-4 of another slot, longer than the walls at its ends but not standing
-  // apart with them. Both keep the paper's labels.
+  // apart with them. Both keep those curve edges (step 10 joins sample 26 of the second between
+  // 27 and 28, where the crust reads the chord 27-28 as outside).
+  const std::vector<std::pair<int, std::vector<Edge>>> cases{{50, {{31, 32}, {26, 29}, {28, 37}, {35, 41}}},
+                                                             {30, {{5, 10}, {4, 27}}}};
+  for (const auto& [count, kept] : cases) {
+    const std::uint64_t seed = count == 50 ? 4 : 3;
+    const auto paper = run("labeling", sparse_outline("concavities", count, seed).points);
+    const auto extended = run("labeling-holes", sparse_outline("concavities", count, seed).points);
+    const std::vector<Edge> edges = sorted(*extended.curve_edges), paper_edges = sorted(*paper.curve_edges);
+    for (const Edge& e : kept) {
+      EXPECT_TRUE(std::binary_search(paper_edges.begin(), paper_edges.end(), e)) << count << ": " << e[0] << "-" << e[1];
+      EXPECT_TRUE(std::binary_search(edges.begin(), edges.end(), e)) << count << ": " << e[0] << "-" << e[1];
+    }
+  }
   expect_same_as_the_paper(sparse_outline("concavities", 50, 4).points, "concavities 50 seed 4");
-  expect_same_as_the_paper(sparse_outline("concavities", 30, 3).points, "concavities 30 seed 3");
 }
 
 TEST(LabelingHoles, ATipCutOffWithTwoSamplesIsJoinedThroughTheNearestSampleOnTheCurve) {

@@ -14,10 +14,13 @@
 //
 // In:  Delaunay/Voronoi arrays, at construction; per call, `curves`, the Delaunay edges of one
 //      part's boundary (closed curves), or of a pocket's walls (open chains: step 8 of
-//      labeling-holes leaves the mouth out), each sample counted once.
-// Out: true if more than half of the samples on them stand apart: the longer of the sample's
-//      edges on them (one or two) is shorter than every Delaunay edge from it to a sample not
-//      on them.
+//      labeling-holes leaves the mouth out), each sample counted once; `continuations`, curve
+//      edges that continue open chains (step 8: the curve edges the pocket keeps at its walls'
+//      ends), whose samples count as on the curves without being tested, and whose lengths
+//      do not count.
+// Out: true if more than half of the samples on `curves` stand apart: the longer of the
+//      sample's edges on them (one or two) is shorter than every Delaunay edge from it to a
+//      sample not on them.
 // An object, so that the per-sample scratch is allocated once for all the parts of a labeling.
 #pragma once
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <numeric>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -166,31 +165,11 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     }
     return first_level;
   };
-  // Without enclosed samples the paper's walks reached every sample's curve.
-  if (!enclosed.empty() && take_missed_curves() && !enclosed.empty()) {
-    std::vector<std::uint8_t> before_pockets = labels.inner;
-    if (open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed) > 0) {
-      // Step 8 opened pockets: their walls are on the curve, and the levels run again for the
-      // holes the pockets' walls kept from being taken. As with pinches, the opened pockets
-      // stand only if then every enclosed sample lies on a curve: evidence left over means the
-      // walk from a mouth went astray (a sparse outline whose stroke is narrower than the
-      // gaps between its samples), and the labels go back to what they were.
-      std::vector<int> evidence = std::move(enclosed);
-      enclosed = samples_enclosed_by_region(dv, labels.inner, region_vertices);
-      take_missed_curves();
-      if (!enclosed.empty()) {
-        labels.inner = std::move(before_pockets);
-        enclosed = std::move(evidence);
-      }
-    }
-  }
-  // The loop stops with evidence left only where no part was taken: those samples' cells lie
-  // in the last region, all of one label, so they have no curve edge. Where a corridor between
-  // two curves swallowed them, step 10 opens it from the triangles around them. As pinches and
-  // step 8's pockets, the corridors stand only if then every enclosed sample is on the curve;
-  // otherwise the repairs below would leave the labels as they are unless every sample has
-  // two (steps 6 and 7 of the rule), and step 9 joins no enclosed sample.
-  if (!enclosed.empty()) {
+  // Step 10 where evidence is left: a corridor between two curves may have swallowed the
+  // enclosed samples, and it is grown from the triangles around them. As pinches and step 8's
+  // pockets, the corridors stand only if then every enclosed sample is on the curve; true if
+  // they do, else the labels are as they came.
+  auto open_corridors_over_the_evidence = [&] {
     std::vector<int> around;
     for (int site : enclosed) {
       const int first = dv.site_triangle[site];
@@ -201,13 +180,43 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
       } while (t != first);
     }
     std::vector<std::uint8_t> before_corridors = labels.inner;
-    if (split_curves_joined_across_a_corridor(dv, labels.inner, around) == 0) return labels;
+    if (split_curves_joined_across_a_corridor(dv, labels.inner, around) == 0) return false;
     const std::vector<std::uint8_t>& inner = labels.inner;
     if (std::any_of(enclosed.begin(), enclosed.end(), [&](int site) { return curve_edges_at(dv, inner, site) == 0; })) {
       labels.inner = std::move(before_corridors);
-      return labels;
+      return false;
+    }
+    return true;
+  };
+  // Without enclosed samples the paper's walks reached every sample's curve.
+  if (!enclosed.empty() && take_missed_curves() && !enclosed.empty()) {
+    std::vector<std::uint8_t> before_pockets = labels.inner;
+    if (open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed) > 0) {
+      // Step 8 opened pockets: their walls are on the curve, and the levels run again for the
+      // holes the pockets' walls kept from being taken. As with pinches, the opened pockets
+      // stand only if then every enclosed sample lies on a curve, here or through the
+      // corridors of step 10 (sharp_corners.json's 8-pointed star at epsilon 0.2, seed 3:
+      // step 8 opens the pocket over samples 396-516 and 519-640, step 10 puts the samples 27,
+      // 93, 765 and 948 at four concave corners back on the curve):
+      // evidence left over means the walk from a mouth went astray (a sparse outline whose
+      // stroke is narrower than the gaps between its samples), and the labels go back to what
+      // they were.
+      std::vector<int> evidence = std::move(enclosed);
+      enclosed = samples_enclosed_by_region(dv, labels.inner, region_vertices);
+      take_missed_curves();
+      if (!enclosed.empty() && !open_corridors_over_the_evidence()) {
+        labels.inner = std::move(before_pockets);
+        enclosed = std::move(evidence);
+      } else {
+        enclosed.clear();
+      }
     }
   }
+  // The loop stops with evidence left only where no part was taken: those samples' cells lie
+  // in the last region, all of one label, so they have no curve edge. Unless step 10 puts them
+  // on the curve, the repairs below would leave the labels as they are unless every sample
+  // has two (steps 6 and 7 of the rule), and step 9 joins no enclosed sample.
+  if (!enclosed.empty() && !open_corridors_over_the_evidence()) return labels;
   // One count of curve edges serves both repairs unless the first changes the labels.
   std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);
   if (relabel_bridging_ears(dv, labels.inner, curve_edges) > 0) curve_edges = curve_edges_per_sample(dv, labels.inner);
@@ -220,9 +229,7 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   for (int s = 0; s < dv.site_count(); ++s) {
     if (dv.site_triangle[s] >= 0 && curve_edges[s] != 2) return labels;  // a duplicate's twin holds its cell
   }
-  std::vector<int> every_triangle(dv.triangle_count());
-  std::iota(every_triangle.begin(), every_triangle.end(), 0);
-  split_curves_joined_across_a_corridor(dv, labels.inner, every_triangle);
+  split_curves_joined_across_a_corridor(dv, labels.inner);
   return labels;
 }
 

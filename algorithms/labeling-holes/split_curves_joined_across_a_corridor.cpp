@@ -1,5 +1,8 @@
 #include "labeling-holes/split_curves_joined_across_a_corridor.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "labeling-holes/curve_edges_per_sample.h"
 #include "local-crust/one_step_crust.h"
 
@@ -8,20 +11,46 @@ namespace {
 
 bool is_inner(const std::vector<std::uint8_t>& inner, int t) { return t != kInfinite && inner[t] != 0; }
 
+// Whether the angle at corner k of triangle t is at least 45 degrees, with a margin for
+// rounding (a superset: the crust test decides). A curve edge that fails the crust test has
+// angles at the two opposite corners summing to 90 degrees or more, so one of them is at
+// least 45.
+bool angle_at_least_45_degrees(const DelaunayVoronoi& dv, int t, int k) {
+  const Point2 r = dv.sites[dv.triangles[t][k]];
+  const Point2 u = dv.sites[dv.triangles[t][(k + 1) % 3]] - r, w = dv.sites[dv.triangles[t][(k + 2) % 3]] - r;
+  return dot(u, w) <= 1.01 * std::abs(cross(u, w));  // cot(angle) <= 1
+}
+
 }  // namespace
+
+int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner) {
+  std::vector<int> seeds;
+  for (int t = 0; t < dv.triangle_count(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const int next = dv.neighbors[t][k];
+      if (inner[t] == is_inner(inner, next) || !angle_at_least_45_degrees(dv, t, k)) continue;
+      seeds.push_back(inner[t] ? t : next);  // the curve edge's inner triangle
+    }
+  }
+  if (seeds.empty()) return 0;
+  std::sort(seeds.begin(), seeds.end());
+  seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
+  return split_curves_joined_across_a_corridor(dv, inner, seeds);
+}
 
 int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
                                           std::span<const int> seeds) {
-  // Per triangle: the seed of the corridor grown through it (taken or not), so each is grown
-  // once; -1 for none yet.
-  std::vector<int> grown(dv.triangle_count(), -1);
+  // Per triangle: grown into no corridor yet, into the one growing, or into one before (taken
+  // or not), so that each is grown once.
+  enum : std::uint8_t { kNotGrown, kGrowing, kGrown };
+  std::vector<std::uint8_t> grown(dv.triangle_count(), kNotGrown);
   std::vector<int> corridor, stack, touched;
   std::vector<Edge> removed, added;
   std::vector<int> change(dv.site_count(), 0);  // per sample: curve edges gained minus lost
-  std::vector<int> touched_by(dv.site_count(), -1);  // per sample: the seed of the last corridor on it
+  std::vector<std::uint8_t> touched_now(dv.site_count(), 0);  // per sample: on the corridor growing
   int relabelled = 0;
   for (int seed : seeds) {
-    if (!inner[seed] || grown[seed] >= 0) continue;
+    if (!inner[seed] || grown[seed] != kNotGrown) continue;
     bool starts = false;  // a curve edge that fails the crust test
     for (int k = 0; k < 3 && !starts; ++k) {
       starts = !is_inner(inner, dv.neighbors[seed][k]) && !is_one_step_crust_edge(dv, seed, k);
@@ -31,7 +60,7 @@ int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector
     corridor.clear();
     removed.clear();
     added.clear();
-    grown[seed] = seed;
+    grown[seed] = kGrowing;
     stack.assign(1, seed);
     while (!stack.empty()) {
       const int t = stack.back();
@@ -39,38 +68,39 @@ int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector
       corridor.push_back(t);
       for (int k = 0; k < 3; ++k) {
         const int next = dv.neighbors[t][k];
-        if (next != kInfinite && grown[next] == seed) continue;  // in this corridor
+        if (next != kInfinite && grown[next] == kGrowing) continue;  // in this corridor
         const Edge e{dv.triangles[t][(k + 1) % 3], dv.triangles[t][(k + 2) % 3]};
         if (!is_inner(inner, next)) {
           removed.push_back(e);
         } else if (is_one_step_crust_edge(dv, t, k)) {
           added.push_back(e);
         } else {  // not crust, so never an edge of a corridor grown before
-          grown[next] = seed;
+          grown[next] = kGrowing;
           stack.push_back(next);
         }
       }
     }
+    for (int t : corridor) grown[t] = kGrown;
     if (added.empty()) continue;
     // Every sample of the corridor must then have exactly two curve edges.
     touched.clear();
     for (int t : corridor) {
       for (int site : dv.triangles[t]) {
-        if (touched_by[site] != seed) touched.push_back(site);
-        touched_by[site] = seed;
+        if (!touched_now[site]) touched.push_back(site);
+        touched_now[site] = 1;
       }
     }
     for (const Edge& e : removed) {
       for (int site : e) {
-        if (touched_by[site] != seed) touched.push_back(site);
-        touched_by[site] = seed;
+        if (!touched_now[site]) touched.push_back(site);
+        touched_now[site] = 1;
         --change[site];
       }
     }
     for (const Edge& e : added) {
       for (int site : e) {
-        if (touched_by[site] != seed) touched.push_back(site);
-        touched_by[site] = seed;
+        if (!touched_now[site]) touched.push_back(site);
+        touched_now[site] = 1;
         ++change[site];
       }
     }
@@ -82,7 +112,7 @@ int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector
       for (int t : corridor) inner[t] = 0;
       relabelled += static_cast<int>(corridor.size());
     }
-    for (int site : touched) change[site] = 0;
+    for (int site : touched) change[site] = touched_now[site] = 0;
   }
   return relabelled;
 }

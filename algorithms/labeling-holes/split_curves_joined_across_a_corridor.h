@@ -49,4 +49,9 @@ namespace curvebench {
 int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
                                           std::span<const int> seeds);
 
+// The same from every triangle: the seeds are the inner triangles at curve edges with an angle
+// of 45 degrees or more opposite them on either side (a curve edge that fails the test has
+// one), in index order, so that a pass over the triangles' own corners finds them.
+int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner);
+
 }  // namespace curvebench

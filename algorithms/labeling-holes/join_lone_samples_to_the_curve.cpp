@@ -1,6 +1,5 @@
 #include "labeling-holes/join_lone_samples_to_the_curve.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>

@@ -47,6 +47,8 @@ int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector
   std::vector<int> corridor, stack, touched;
   std::vector<Edge> removed, added;
   std::vector<int> change(dv.site_count(), 0);  // per sample: curve edges gained minus lost
+  // Per sample: its curve edges, counted once (a fan walk) and then kept up to date, or -1.
+  std::vector<int> count(dv.site_count(), -1);
   std::vector<std::uint8_t> touched_now(dv.site_count(), 0);  // per sample: on the corridor growing
   int relabelled = 0;
   for (int seed : seeds) {
@@ -106,10 +108,12 @@ int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector
     }
     bool manifold = true;
     for (int site : touched) {
-      manifold = manifold && curve_edges_at(dv, inner, site) + change[site] == 2;
+      if (count[site] < 0) count[site] = curve_edges_at(dv, inner, site);
+      manifold = manifold && count[site] + change[site] == 2;
     }
     if (manifold) {
       for (int t : corridor) inner[t] = 0;
+      for (int site : touched) count[site] += change[site];
       relabelled += static_cast<int>(corridor.size());
     }
     for (int site : touched) change[site] = touched_now[site] = 0;

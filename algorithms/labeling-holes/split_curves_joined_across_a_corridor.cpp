@@ -92,19 +92,13 @@ int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector
         touched_now[site] = 1;
       }
     }
-    for (const Edge& e : removed) {
-      for (int site : e) {
-        if (!touched_now[site]) touched.push_back(site);
-        touched_now[site] = 1;
-        --change[site];
-      }
+    for (const Edge& e : removed) {  // edges of the corridor's triangles: their ends are touched
+      --change[e[0]];
+      --change[e[1]];
     }
     for (const Edge& e : added) {
-      for (int site : e) {
-        if (!touched_now[site]) touched.push_back(site);
-        touched_now[site] = 1;
-        ++change[site];
-      }
+      ++change[e[0]];
+      ++change[e[1]];
     }
     bool manifold = true;
     for (int site : touched) {

@@ -179,11 +179,11 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
         t = dv.neighbors[t][(corner_of_site(dv, t, site) + 1) % 3];
       } while (t != first);
     }
-    std::vector<std::uint8_t> before_corridors = labels.inner;
-    if (split_curves_joined_across_a_corridor(dv, labels.inner, around) == 0) return false;
+    const std::vector<int> opened = split_curves_joined_across_a_corridor(dv, labels.inner, around);
+    if (opened.empty()) return false;
     const std::vector<std::uint8_t>& inner = labels.inner;
     if (std::any_of(enclosed.begin(), enclosed.end(), [&](int site) { return curve_edges_at(dv, inner, site) == 0; })) {
-      labels.inner = std::move(before_corridors);
+      for (int t : opened) labels.inner[t] = 1;  // they were inner
       return false;
     }
     return true;

@@ -23,7 +23,7 @@ bool angle_at_least_45_degrees(const DelaunayVoronoi& dv, int t, int k) {
 
 }  // namespace
 
-int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner) {
+std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner) {
   std::vector<int> seeds;
   for (int t = 0; t < dv.triangle_count(); ++t) {
     for (int k = 0; k < 3; ++k) {
@@ -32,14 +32,14 @@ int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector
       seeds.push_back(inner[t] ? t : next);  // the curve edge's inner triangle
     }
   }
-  if (seeds.empty()) return 0;
+  if (seeds.empty()) return {};
   std::sort(seeds.begin(), seeds.end());
   seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
   return split_curves_joined_across_a_corridor(dv, inner, seeds);
 }
 
-int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
-                                          std::span<const int> seeds) {
+std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                                                       std::span<const int> seeds) {
   // Per triangle: grown into no corridor yet, into the one growing, or into one before (taken
   // or not), so that each is grown once.
   enum : std::uint8_t { kNotGrown, kGrowing, kGrown };
@@ -50,7 +50,7 @@ int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector
   // Per sample: its curve edges, counted once (a fan walk) and then kept up to date, or -1.
   std::vector<int> count(dv.site_count(), -1);
   std::vector<std::uint8_t> touched_now(dv.site_count(), 0);  // per sample: on the corridor growing
-  int relabelled = 0;
+  std::vector<int> relabelled;
   for (int seed : seeds) {
     if (!inner[seed] || grown[seed] != kNotGrown) continue;
     bool starts = false;  // a curve edge that fails the crust test
@@ -108,7 +108,7 @@ int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector
     if (manifold) {
       for (int t : corridor) inner[t] = 0;
       for (int site : touched) count[site] += change[site];
-      relabelled += static_cast<int>(corridor.size());
+      relabelled.insert(relabelled.end(), corridor.begin(), corridor.end());
     }
     for (int site : touched) change[site] = touched_now[site] = 0;
   }

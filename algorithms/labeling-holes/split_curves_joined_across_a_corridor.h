@@ -35,7 +35,7 @@
 //      vertex is outer); `seeds`, the triangles to grow corridors from, in order (a seed
 //      that is not inner, lies in a corridor grown already, or has no curve edge that fails
 //      the test is skipped).
-// Out: `inner` with the corridors' triangles set to 0; returns how many triangles were.
+// Out: `inner` with the corridors' triangles set to 0; returns those triangles.
 #pragma once
 
 #include <cstdint>
@@ -46,12 +46,12 @@
 
 namespace curvebench {
 
-int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
-                                          std::span<const int> seeds);
+std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                                                       std::span<const int> seeds);
 
 // The same from every triangle: the seeds are the inner triangles at curve edges with an angle
 // of 45 degrees or more opposite them on either side (a curve edge that fails the test has
 // one), in index order, so that a pass over the triangles' own corners finds them.
-int split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner);
+std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner);
 
 }  // namespace curvebench

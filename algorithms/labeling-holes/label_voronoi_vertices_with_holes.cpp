@@ -13,6 +13,7 @@
 #include "labeling-holes/open_pockets_closed_at_their_mouths.h"
 #include "labeling-holes/relabel_bridging_ears.h"
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
+#include "labeling-holes/shape_hull_through_every_sample.h"
 #include "labeling-holes/split_curves_joined_across_a_corridor.h"
 #include "labeling-holes/walk_region_from_its_boundary.h"
 
@@ -139,6 +140,7 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   // taken at the first level (the region is still every inner vertex).
   std::vector<std::uint8_t> region;
   std::vector<int> region_vertices;
+  bool found_missed_curves = false;  // closed curves of their own: not one curve, no step 11
   auto take_missed_curves = [&] {
     region = labels.inner;
     region_vertices.resize(dv.triangle_count() - std::count(region.begin(), region.end(), 0) + 1);
@@ -154,6 +156,7 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
       std::vector<int> flipped = parts_across_missed_curves(dv, region, walk, enclosed);
       if (flipped.empty()) break;  // no next region, so no evidence in it
       first_level = false;
+      found_missed_curves = true;
       for (int t : region_vertices) region[t] = 0;
       for (int t : flipped) {
         region[t] = 1;
@@ -207,6 +210,7 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
       if (!enclosed.empty() && !open_corridors_over_the_evidence()) {
         labels.inner = std::move(before_pockets);
         enclosed = std::move(evidence);
+        found_missed_curves = false;  // as before the pockets: the first level took none
       } else {
         enclosed.clear();
       }
@@ -215,8 +219,13 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   // The loop stops with evidence left only where no part was taken: those samples' cells lie
   // in the last region, all of one label, so they have no curve edge. Unless step 10 puts them
   // on the curve, the repairs below would leave the labels as they are unless every sample
-  // has two (steps 6 and 7 of the rule), and step 9 joins no enclosed sample.
-  if (!enclosed.empty() && !open_corridors_over_the_evidence()) return labels;
+  // has two (steps 6 and 7 of the rule), and step 9 joins no enclosed sample. Labels that end
+  // with a sample off the curve or on a pinch go to step 11 (shape_hull_through_every_sample.h),
+  // unless missed curves were found, which shape-hull's one curve cannot hold.
+  if (!enclosed.empty() && !open_corridors_over_the_evidence()) {
+    if (!found_missed_curves) take_the_shape_hull_through_every_sample(dv, labels.inner, curve_edges_per_sample(dv, labels.inner));
+    return labels;
+  }
   // One count of curve edges serves both repairs unless the first changes the labels.
   std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);
   if (relabel_bridging_ears(dv, labels.inner, curve_edges) > 0) curve_edges = curve_edges_per_sample(dv, labels.inner);
@@ -227,7 +236,10 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   }
   // Corridors without swallowed samples, on a 1-manifold: from every triangle.
   for (int s = 0; s < dv.site_count(); ++s) {
-    if (dv.site_triangle[s] >= 0 && curve_edges[s] != 2) return labels;  // a duplicate's twin holds its cell
+    if (dv.site_triangle[s] >= 0 && curve_edges[s] != 2) {  // a duplicate's twin holds its cell
+      if (!found_missed_curves) take_the_shape_hull_through_every_sample(dv, labels.inner, curve_edges);
+      return labels;
+    }
   }
   split_curves_joined_across_a_corridor(dv, labels.inner);
   return labels;

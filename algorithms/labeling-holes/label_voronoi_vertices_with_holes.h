@@ -26,7 +26,11 @@
 // between curves are relabelled: ears through one sample (relabel_bridging_ears.h), then
 // corridors outside the convex hull (relabel_inner_vertices_outside_the_hull.h); and samples
 // the curve passes by (a sparse sharp tip cut off by its chord) are joined to it through the
-// triangle at their curve edge (join_lone_samples_to_the_curve.h).
+// triangle at their curve edge (join_lone_samples_to_the_curve.h), and corridors the local
+// crust test reads as outside are opened (split_curves_joined_across_a_corridor.h). Labels
+// that still leave a sample off the curve or on a pinch, on one connected curve, give way to
+// the shape-hull's triangles when its curve passes through every sample
+// (shape_hull_through_every_sample.h).
 //
 // In:  the Delaunay/Voronoi arrays of samples of one or more closed curves, nested or not.
 // Out: the paper's VoronoiLabels (sources and counters from label_voronoi_vertices) with

@@ -1,0 +1,57 @@
+#include "labeling-holes/shape_hull_through_every_sample.h"
+
+#include <numeric>
+#include <utility>
+
+#include "labeling-holes/curve_edges_per_sample.h"
+#include "shape-hull/shape_hull_triangles.h"
+
+namespace curvebench {
+namespace {
+
+// Whether every sample with a cell (a duplicate's twin has none) has exactly two curve edges.
+bool every_sample_has_two(const DelaunayVoronoi& dv, const std::vector<int>& curve_edges) {
+  for (int s = 0; s < dv.site_count(); ++s) {
+    if (dv.site_triangle[s] >= 0 && curve_edges[s] != 2) return false;
+  }
+  return true;
+}
+
+// Whether the curve edges (between an inner and an outer triangle) join every sample that has
+// one into one connected curve: a union-find over the edges, from their inner side.
+bool one_connected_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                         const std::vector<int>& curve_edges) {
+  std::vector<int> parent(dv.site_count());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](int s) {
+    while (parent[s] != s) s = parent[s] = parent[parent[s]];
+    return s;
+  };
+  for (int t = 0; t < dv.triangle_count(); ++t) {
+    if (!inner[t]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int next = dv.neighbors[t][k];
+      if (next != kInfinite && inner[next]) continue;
+      const int a = root(dv.triangles[t][(k + 1) % 3]), b = root(dv.triangles[t][(k + 2) % 3]);
+      if (a != b) parent[a] = b;
+    }
+  }
+  int curves = 0;
+  for (int s = 0; s < dv.site_count(); ++s) curves += curve_edges[s] > 0 && root(s) == s;
+  return curves == 1;
+}
+
+}  // namespace
+
+bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                                              const std::vector<int>& curve_edges) {
+  if (dv.dimension != 2 || every_sample_has_two(dv, curve_edges) || !one_connected_curve(dv, inner, curve_edges)) {
+    return false;
+  }
+  std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
+  if (!every_sample_has_two(dv, curve_edges_per_sample(dv, shape))) return false;
+  inner = std::move(shape);
+  return true;
+}
+
+}  // namespace curvebench

@@ -1,0 +1,38 @@
+// Step 11 of labeling-holes: where the labels end with samples off the curve or on a pinch,
+// the shape-hull of the samples instead, if its curve is a 1-manifold through every sample.
+//
+// Every sample of a curve lies on it between its two neighbours, so labels under which a
+// sample has no curve edge, or four, are wrong there. Steps 6-10 repair the faults they can
+// explain and leave the others (a sparse outline whose pocket the paper closed at its mouth
+// and step 8 cannot open: the star at 30 random samples, seed 2, has 6 and 7 swapped and 8
+// off the curve, 15 and 16 swapped and 12-14 off it). Shape-hull (Peethambaran and
+// Muthuganapathy, Computer-Aided Design 2015, by the paper's first author; `shape-hull/`)
+// sculpts the Delaunay triangulation from the convex hull, one triangle at a time, by
+// decreasing circumradius, while the triangle's circumcentre lies outside the shape, and
+// never through a sample already on the boundary. Its triangles are a topological disk,
+// so its curve is one closed curve; on that star it is the true one.
+//
+// It is taken only where it can be the answer and the labels cannot: the labels' curve
+// edges form one connected curve (shape-hull's one curve cannot represent holes, nested or
+// disjoint curves, nor the small closed curves noise leaves, so labels with several are kept:
+// this also spares noisy input the sculpting's cost), some sample has other than two curve
+// edges, and under shape-hull's triangles every sample has exactly two. Shape-hull's kept
+// triangles then become the inner vertices, so the medial axis and the dominant points follow
+// its curve as they follow the labels'.
+//
+// In:  Delaunay/Voronoi arrays; `inner`, per triangle, 1 for inner (the infinite vertex is
+//      outer); `curve_edges`, its counts per sample (curve_edges_per_sample.h).
+// Out: true with `inner` set to shape-hull's triangles, or false with `inner` as it came.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "voronoi/delaunay_voronoi.h"
+
+namespace curvebench {
+
+bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                                              const std::vector<int>& curve_edges);
+
+}  // namespace curvebench

@@ -1,7 +1,7 @@
 // The "labeling-holes" algorithm: the paper's incremental Voronoi-vertex labeling
 // (Peethambaran et al. 2019) extended to holes and nested curves, with its bridges between
-// curves repaired (label_voronoi_vertices_with_holes.h); the rest is the paper's
-// (labeling_algorithm.h).
+// curves repaired and, as a last resort, shape-hull's curve (label_voronoi_vertices_with_holes.h);
+// the rest is the paper's (labeling_algorithm.h).
 #include "core/registry.h"
 #include "labeling-holes/label_voronoi_vertices_with_holes.h"
 #include "labeling/labeling_algorithm.h"
@@ -12,7 +12,8 @@ namespace {
 [[maybe_unused]] const bool registered = register_algorithm(make_labeling_algorithm(
     "labeling-holes",
     "Incremental Voronoi-vertex labeling (Peethambaran, Parakkat, Tagliasacchi, Wang, Muthuganapathy; CGF 2019), "
-    "with walks inside the regions it cannot reach (holes and nested curves) and its bridges between curves relabelled",
+    "with walks inside the regions it cannot reach (holes and nested curves), its bridges between curves relabelled, "
+    "and shape-hull's curve where its labels leave samples off one connected curve and shape-hull's passes through every sample",
     label_voronoi_vertices_with_holes));
 
 }  // namespace

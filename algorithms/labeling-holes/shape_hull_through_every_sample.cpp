@@ -9,7 +9,7 @@
 namespace curvebench {
 namespace {
 
-// Whether every sample with a cell (a duplicate's twin has none) has exactly two curve edges.
+// Whether every sample with a cell (site_triangle >= 0) has exactly two curve edges.
 bool every_sample_has_two(const DelaunayVoronoi& dv, const std::vector<int>& curve_edges) {
   for (int s = 0; s < dv.site_count(); ++s) {
     if (dv.site_triangle[s] >= 0 && curve_edges[s] != 2) return false;

@@ -37,6 +37,15 @@ void for_each_curve_edge_at(const DelaunayVoronoi& dv, const std::vector<std::ui
   } while (t != kInfinite && t != first);
 }
 
+// Whether every sample with a cell (site_triangle >= 0) has exactly two curve edges: the
+// curve is a 1-manifold through every sample.
+inline bool every_sample_has_two_curve_edges(const DelaunayVoronoi& dv, const std::vector<int>& curve_edges) {
+  for (int s = 0; s < dv.site_count(); ++s) {
+    if (dv.site_triangle[s] >= 0 && curve_edges[s] != 2) return false;
+  }
+  return true;
+}
+
 // The count of one sample.
 inline int curve_edges_at(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, int site) {
   int count = 0;

@@ -235,11 +235,9 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     curve_edges = curve_edges_per_sample(dv, labels.inner);
   }
   // Corridors without swallowed samples, on a 1-manifold: from every triangle.
-  for (int s = 0; s < dv.site_count(); ++s) {
-    if (dv.site_triangle[s] >= 0 && curve_edges[s] != 2) {  // a duplicate's twin holds its cell
-      if (!found_missed_curves) take_the_shape_hull_through_every_sample(dv, labels.inner, curve_edges);
-      return labels;
-    }
+  if (!every_sample_has_two_curve_edges(dv, curve_edges)) {
+    if (!found_missed_curves) take_the_shape_hull_through_every_sample(dv, labels.inner, curve_edges);
+    return labels;
   }
   split_curves_joined_across_a_corridor(dv, labels.inner);
   return labels;

@@ -1,21 +1,12 @@
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
 
-#include <algorithm>
-
 #include "labeling-holes/curve_edges_per_sample.h"
 
 namespace curvebench {
-namespace {
-
-bool every_sample_has_two(const std::vector<int>& curve_edges) {
-  return std::all_of(curve_edges.begin(), curve_edges.end(), [](int count) { return count == 2; });
-}
-
-}  // namespace
 
 int relabel_inner_vertices_outside_the_hull(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
                                             const std::vector<int>& curve_edges) {
-  if (!every_sample_has_two(curve_edges)) return 0;
+  if (!every_sample_has_two_curve_edges(dv, curve_edges)) return 0;
   std::vector<int> outside;
   int hull_wedge = 0;  // consecutive triangles lie close together: the hull search gallops
   for (int t = 0; t < dv.triangle_count(); ++t) {
@@ -23,7 +14,7 @@ int relabel_inner_vertices_outside_the_hull(const DelaunayVoronoi& dv, std::vect
   }
   if (outside.empty()) return 0;
   for (int t : outside) inner[t] = 0;
-  if (!every_sample_has_two(curve_edges_per_sample(dv, inner))) {
+  if (!every_sample_has_two_curve_edges(dv, curve_edges_per_sample(dv, inner))) {
     for (int t : outside) inner[t] = 1;
     return 0;
   }

@@ -9,14 +9,6 @@
 namespace curvebench {
 namespace {
 
-// Whether every sample with a cell (site_triangle >= 0) has exactly two curve edges.
-bool every_sample_has_two(const DelaunayVoronoi& dv, const std::vector<int>& curve_edges) {
-  for (int s = 0; s < dv.site_count(); ++s) {
-    if (dv.site_triangle[s] >= 0 && curve_edges[s] != 2) return false;
-  }
-  return true;
-}
-
 // Whether the curve edges (between an inner and an outer triangle) join every sample that has
 // one into one connected curve: a union-find over the edges, from their inner side.
 bool one_connected_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
@@ -45,11 +37,11 @@ bool one_connected_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8
 
 bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
                                               const std::vector<int>& curve_edges) {
-  if (dv.dimension != 2 || every_sample_has_two(dv, curve_edges) || !one_connected_curve(dv, inner, curve_edges)) {
+  if (dv.dimension != 2 || every_sample_has_two_curve_edges(dv, curve_edges) || !one_connected_curve(dv, inner, curve_edges)) {
     return false;
   }
   std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
-  if (!every_sample_has_two(dv, curve_edges_per_sample(dv, shape))) return false;
+  if (!every_sample_has_two_curve_edges(dv, curve_edges_per_sample(dv, shape))) return false;
   inner = std::move(shape);
   return true;
 }

@@ -1,6 +1,7 @@
 #include "labeling-holes/label_voronoi_vertices_with_holes.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <utility>
@@ -82,9 +83,8 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
       }
     }
   };
-  enum class Boundary { other, missed_closed_curves, pinched_missed_closed_curves };
-  std::optional<MissedCurvesStandApart> stand_apart;  // made for the first closed boundary
-  auto classify_boundary = [&] {
+  // Whether the boundary is closed curves through enclosed samples (each with two edges).
+  auto closed_through_enclosed_samples = [&] {
     for (const Edge& e : boundary) {
       ++boundary_degree[e[0]];
       ++boundary_degree[e[1]];
@@ -94,32 +94,62 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
       for (int site : e) closed = closed && enclosed[site] && boundary_degree[site] == 2;
     }
     for (const Edge& e : boundary) boundary_degree[e[0]] = boundary_degree[e[1]] = 0;
-    if (!closed) return Boundary::other;
+    return closed;
+  };
+  std::optional<MissedCurvesStandApart> stand_apart;  // made for the first closed boundary
+  auto stands_apart = [&](const std::vector<Edge>& curves) {
     if (!stand_apart) stand_apart.emplace(dv);
-    if (!(*stand_apart)(boundary)) return Boundary::other;
-    return pinched ? Boundary::pinched_missed_closed_curves : Boundary::missed_closed_curves;
+    return (*stand_apart)(curves);
   };
 
-  std::vector<std::uint8_t> on_a_taken_curve(dv.site_count(), 0);
-  std::vector<int> pinched_parts;
+  // Per sample: on the curves of a part taken, or on the closed boundary of a pinched part.
+  enum : std::uint8_t { kOnATakenCurve = 1, kOnAPinchedBoundary = 2 };
+  std::vector<std::uint8_t> on_a_curve(dv.site_count(), 0);
+  // The pinched parts with closed boundaries, their vertices and boundaries one after another.
+  std::vector<int> pinched_vertices;
+  std::vector<Edge> pinched_boundaries;
+  std::vector<std::array<std::size_t, 2>> pinched_ends;
   // Every vertex of a part is one the walk did not keep, so a scan of those finds every part.
   for (int t : walk.unkept) {
     if (part_state[t] != kInAPart) continue;  // in no part, or in one grown already
     grow_part(t);
-    const Boundary kind = classify_boundary();
-    if (kind != Boundary::other) {
-      for (const Edge& e : boundary) on_a_taken_curve[e[0]] = on_a_taken_curve[e[1]] = 1;
-    }
-    if (kind == Boundary::missed_closed_curves) {
+    if (!closed_through_enclosed_samples()) continue;
+    if (pinched) {
+      pinched_vertices.insert(pinched_vertices.end(), part.begin(), part.end());
+      pinched_boundaries.insert(pinched_boundaries.end(), boundary.begin(), boundary.end());
+      pinched_ends.push_back({pinched_vertices.size(), pinched_boundaries.size()});
+      for (const Edge& e : boundary) {
+        for (int site : e) on_a_curve[site] |= kOnAPinchedBoundary;
+      }
+    } else if (stands_apart(boundary)) {
+      for (const Edge& e : boundary) {
+        for (int site : e) on_a_curve[site] |= kOnATakenCurve;
+      }
       across.insert(across.end(), part.begin(), part.end());
-    } else if (kind == Boundary::pinched_missed_closed_curves) {
-      pinched_parts.insert(pinched_parts.end(), part.begin(), part.end());
     }
   }
-  // Pinched parts only when the taken curves explain all the evidence (see above).
-  const bool every_enclosed_sample_explained =
-      std::all_of(enclosed_samples.begin(), enclosed_samples.end(), [&](int site) { return on_a_taken_curve[site] != 0; });
-  if (every_enclosed_sample_explained) across.insert(across.end(), pinched_parts.begin(), pinched_parts.end());
+  // Pinched parts only when the taken curves explain all the evidence (see above). The
+  // stand-apart test of each is needed only if they could: if every pinched part were taken,
+  // would every enclosed sample lie on a taken curve? (Noise leaves many pinched parts and
+  // evidence none of them explains.)
+  auto every_enclosed_sample_on = [&](std::uint8_t curves) {
+    return std::all_of(enclosed_samples.begin(), enclosed_samples.end(), [&](int site) { return (on_a_curve[site] & curves) != 0; });
+  };
+  if (pinched_ends.empty() || !every_enclosed_sample_on(kOnATakenCurve | kOnAPinchedBoundary)) return across;
+  std::vector<int> pinched_parts;
+  std::size_t vertices_from = 0, boundary_from = 0;
+  for (const auto& [vertices_to, boundary_to] : pinched_ends) {
+    boundary.assign(pinched_boundaries.begin() + boundary_from, pinched_boundaries.begin() + boundary_to);
+    if (stands_apart(boundary)) {
+      for (const Edge& e : boundary) {
+        for (int site : e) on_a_curve[site] |= kOnATakenCurve;
+      }
+      pinched_parts.insert(pinched_parts.end(), pinched_vertices.begin() + vertices_from, pinched_vertices.begin() + vertices_to);
+    }
+    vertices_from = vertices_to;
+    boundary_from = boundary_to;
+  }
+  if (every_enclosed_sample_on(kOnATakenCurve)) across.insert(across.end(), pinched_parts.begin(), pinched_parts.end());
   return across;
 }
 
@@ -141,6 +171,7 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   std::vector<std::uint8_t> region;
   std::vector<int> region_vertices;
   bool found_missed_curves = false;  // closed curves of their own: not one curve, no step 11
+  bool pockets_split_one_curve = false;  // step 8 left the one curve of the labels in two
   auto take_missed_curves = [&] {
     region = labels.inner;
     region_vertices.resize(dv.triangle_count() - std::count(region.begin(), region.end(), 0) + 1);
@@ -194,7 +225,8 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   // Without enclosed samples the paper's walks reached every sample's curve.
   if (!enclosed.empty() && take_missed_curves() && !enclosed.empty()) {
     std::vector<std::uint8_t> before_pockets = labels.inner;
-    if (open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed) > 0) {
+    const OpenedPockets pockets = open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed);
+    if (pockets.relabelled > 0) {
       // Step 8 opened pockets: their walls are on the curve, and the levels run again for the
       // holes the pockets' walls kept from being taken. As with pinches, the opened pockets
       // stand only if then every enclosed sample lies on a curve, here or through the
@@ -213,17 +245,29 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
         found_missed_curves = false;  // as before the pockets: the first level took none
       } else {
         enclosed.clear();
+        pockets_split_one_curve =
+            pockets.split_a_curve &&
+            curve_edges_form_one_connected_curve(dv, before_pockets, curve_edges_per_sample(dv, before_pockets));
       }
     }
   }
+  // Step 11 (shape_hull_through_every_sample.h) where the labels end with a fault and hold one
+  // curve, or where step 8 split their one curve; not where missed curves were found, which
+  // shape-hull's one curve cannot hold.
+  auto take_the_shape_hull_where_one_curve_is_wrong = [&](const std::vector<int>& curve_edges) {
+    if (found_missed_curves) return;
+    if (pockets_split_one_curve || (!every_sample_has_two_curve_edges(dv, curve_edges) &&
+                                    curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges))) {
+      take_the_shape_hull_through_every_sample(dv, labels.inner);
+    }
+  };
   // The loop stops with evidence left only where no part was taken: those samples' cells lie
   // in the last region, all of one label, so they have no curve edge. Unless step 10 puts them
   // on the curve, the repairs below would leave the labels as they are unless every sample
   // has two (steps 6 and 7 of the rule), and step 9 joins no enclosed sample. Labels that end
-  // with a sample off the curve or on a pinch go to step 11 (shape_hull_through_every_sample.h),
-  // unless missed curves were found, which shape-hull's one curve cannot hold.
+  // with a sample off the curve or on a pinch go to step 11.
   if (!enclosed.empty() && !open_corridors_over_the_evidence()) {
-    if (!found_missed_curves) take_the_shape_hull_through_every_sample(dv, labels.inner, curve_edges_per_sample(dv, labels.inner));
+    take_the_shape_hull_where_one_curve_is_wrong(curve_edges_per_sample(dv, labels.inner));
     return labels;
   }
   // One count of curve edges serves both repairs unless the first changes the labels.
@@ -236,10 +280,11 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   }
   // Corridors without swallowed samples, on a 1-manifold: from every triangle.
   if (!every_sample_has_two_curve_edges(dv, curve_edges)) {
-    if (!found_missed_curves) take_the_shape_hull_through_every_sample(dv, labels.inner, curve_edges);
+    take_the_shape_hull_where_one_curve_is_wrong(curve_edges);
     return labels;
   }
   split_curves_joined_across_a_corridor(dv, labels.inner);
+  if (pockets_split_one_curve && !found_missed_curves) take_the_shape_hull_through_every_sample(dv, labels.inner);
   return labels;
 }
 

@@ -22,8 +22,13 @@
 // (join_lone_samples_to_the_curve.h); the boundary may take no other curve edge off the
 // curve. Otherwise the labels stay as they are.
 //
+// A pocket opened from one mouth keeps its samples on one curve. One whose samples end on two
+// (a joined tip closed into a loop of its own) stays open but is reported: step 11 may then
+// take the shape-hull (shape_hull_through_every_sample.h).
+//
 // In:  Delaunay/Voronoi arrays; `inner` per triangle; the enclosed samples (all-inner cells).
-// Out: `inner` with the opened pockets outer; the number of vertices relabelled.
+// Out: `inner` with the opened pockets outer; the number of vertices relabelled, and whether
+//      a pocket without a second mouth left its samples on two curves.
 #pragma once
 
 #include <cstdint>
@@ -34,7 +39,12 @@
 
 namespace curvebench {
 
-int open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+struct OpenedPockets {
+  int relabelled = 0;
+  bool split_a_curve = false;
+};
+
+OpenedPockets open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
                                         std::span<const int> enclosed_samples);
 
 }  // namespace curvebench

@@ -7,12 +7,10 @@
 #include "shape-hull/shape_hull_triangles.h"
 
 namespace curvebench {
-namespace {
 
-// Whether the curve edges (between an inner and an outer triangle) join every sample that has
-// one into one connected curve: a union-find over the edges, from their inner side.
-bool one_connected_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
-                         const std::vector<int>& curve_edges) {
+bool curve_edges_form_one_connected_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                                          const std::vector<int>& curve_edges) {
+  // A union-find over the curve edges, from their inner side.
   std::vector<int> parent(dv.site_count());
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int s) {
@@ -33,13 +31,8 @@ bool one_connected_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8
   return curves == 1;
 }
 
-}  // namespace
-
-bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
-                                              const std::vector<int>& curve_edges) {
-  if (dv.dimension != 2 || every_sample_has_two_curve_edges(dv, curve_edges) || !one_connected_curve(dv, inner, curve_edges)) {
-    return false;
-  }
+bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner) {
+  if (dv.dimension != 2) return false;
   std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
   if (!every_sample_has_two_curve_edges(dv, curve_edges_per_sample(dv, shape))) return false;
   inner = std::move(shape);

@@ -1,5 +1,6 @@
-// Step 11 of labeling-holes: where the labels end with samples off the curve or on a pinch,
-// the shape-hull of the samples instead, if its curve is a 1-manifold through every sample.
+// Step 11 of labeling-holes: where the labels end with samples off the curve or on a pinch, or
+// with a curve step 8 split in two, the shape-hull of the samples instead, if its curve is a
+// 1-manifold through every sample.
 //
 // Every sample of a curve lies on it between its two neighbours, so labels under which a
 // sample has no curve edge, or four, are wrong there. Steps 6-10 repair the faults they can
@@ -12,17 +13,15 @@
 // never through a sample already on the boundary. Its triangles are a topological disk,
 // so its curve is one closed curve; on that star it is the true one.
 //
-// It is taken only where it can be the answer and the labels cannot: the labels' curve
-// edges form one connected curve (shape-hull's one curve cannot represent holes, nested or
+// It is taken only where it can be the answer and the labels cannot (the caller,
+// label_voronoi_vertices_with_holes.cpp, decides where): the labels are wrong somewhere (a
+// sample has other than two curve edges, or step 8 opened a pocket that left its samples on
+// two curves), they hold one curve (for such a pocket, the labels before step 8; shape-hull's one curve cannot represent holes, nested or
 // disjoint curves, nor the small closed curves noise leaves, so labels with several are kept:
-// this also spares noisy input the sculpting's cost), some sample has other than two curve
-// edges, and under shape-hull's triangles every sample has exactly two. Shape-hull's kept
-// triangles then become the inner vertices, so the medial axis and the dominant points follow
-// its curve as they follow the labels'.
-//
-// In:  Delaunay/Voronoi arrays; `inner`, per triangle, 1 for inner (the infinite vertex is
-//      outer); `curve_edges`, its counts per sample (curve_edges_per_sample.h).
-// Out: true with `inner` set to shape-hull's triangles, or false with `inner` as it came.
+// this also spares noisy input the sculpting's cost), and under shape-hull's triangles every
+// sample has exactly two curve edges. Shape-hull's kept triangles then become the inner
+// vertices, so the medial axis and the dominant points follow its curve as they follow the
+// labels'.
 #pragma once
 
 #include <cstdint>
@@ -32,7 +31,15 @@
 
 namespace curvebench {
 
-bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
-                                              const std::vector<int>& curve_edges);
+// In:  Delaunay/Voronoi arrays; `inner`, per triangle, 1 for inner (the infinite vertex is
+//      outer); `curve_edges`, its counts per sample (curve_edges_per_sample.h).
+// Out: whether the curve edges join every sample that has one into one connected curve.
+bool curve_edges_form_one_connected_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                                          const std::vector<int>& curve_edges);
+
+// In:  Delaunay/Voronoi arrays; `inner`, the labels to replace.
+// Out: true with `inner` set to shape-hull's triangles if under them every sample has exactly
+//      two curve edges, else false with `inner` as it came.
+bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner);
 
 }  // namespace curvebench

@@ -13,14 +13,19 @@ RegionWalk walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<co
   // One byte of flags per vertex, so that a step of the walk reads one array, not four.
   enum : std::uint8_t { kInRegion = 1, kSeed = 2, kVisited = 4, kKept = 8 };
   std::vector<std::uint8_t> state(dv.triangle_count(), 0);
-  auto in_region = [&](int t) { return t != kInfinite && region[t]; };
-  std::vector<int> seeds;
+  // Without branches (a frontier vertex follows no pattern on noisy input): every vertex is
+  // written as a seed, and the count moves past it only if it is one.
+  auto in_region = [&](int t) { return unsigned{t != kInfinite} & unsigned{region[t == kInfinite ? 0 : t] != 0}; };
+  std::vector<int> seeds(region_vertices.size());
+  std::size_t seed_count = 0;
   for (int t : region_vertices) {
     const auto& next = dv.neighbors[t];
-    const bool frontier = !in_region(next[0]) || !in_region(next[1]) || !in_region(next[2]);
-    state[t] = frontier ? kInRegion | kSeed : kInRegion;
-    if (frontier) seeds.push_back(t);
+    const unsigned frontier = (in_region(next[0]) & in_region(next[1]) & in_region(next[2])) ^ 1u;
+    state[t] = static_cast<std::uint8_t>(kInRegion | (frontier * kSeed));
+    seeds[seed_count] = t;
+    seed_count += frontier;
   }
+  seeds.resize(seed_count);
 
   std::vector<int> source(dv.site_count(), kUnpaired);
   std::vector<int> stack;
@@ -51,10 +56,14 @@ RegionWalk walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<co
     __builtin_prefetch(&dv.circumcenters[root]);
   });
   RegionWalk walk;
+  walk.unkept.resize(region_vertices.size());
+  std::size_t unkept_count = 0;
   for (int t : region_vertices) {
-    if (!(state[t] & kKept)) walk.unkept.push_back(t);
+    walk.unkept[unkept_count] = t;
+    unkept_count += (state[t] & kKept) == 0;
   }
-  for (auto& flags : state) flags = (flags & kKept) ? 1 : 0;
+  walk.unkept.resize(unkept_count);
+  for (auto& flags : state) flags = (flags & kKept) != 0;
   walk.kept = std::move(state);
   return walk;
 }

@@ -184,7 +184,7 @@ TEST(LabelingHoles, APocketsWallsStandApartFromTheCurveTheyContinue) {
   ASSERT_EQ(enclosed.size(), 1u);
   EXPECT_EQ(dv.input_of_site[enclosed[0]], 30);
   const std::vector<std::uint8_t> paper = labels.inner;
-  EXPECT_EQ(open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed), 3);
+  EXPECT_EQ(open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed).relabelled, 3);
   std::vector<std::vector<int>> opened;
   for (int t = 0; t < dv.triangle_count(); ++t) {
     if (labels.inner[t] == paper[t]) continue;
@@ -644,7 +644,8 @@ TEST(LabelingHoles, AnOutlineLeftWithSamplesOffTheCurveTakesTheShapeHullThroughE
   const DelaunayVoronoi dv = build_delaunay_voronoi(star.points);
   std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
   EXPECT_NE(sorted(*run("labeling", star.points).curve_edges), sorted(star.truth.edges));
-  EXPECT_TRUE(take_the_shape_hull_through_every_sample(dv, inner, curve_edges_per_sample(dv, inner)));
+  EXPECT_TRUE(curve_edges_form_one_connected_curve(dv, inner, curve_edges_per_sample(dv, inner)));
+  EXPECT_TRUE(take_the_shape_hull_through_every_sample(dv, inner));
   const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
   EXPECT_EQ(std::count(curve_edges.begin(), curve_edges.end(), 2), dv.site_count());
   const std::vector<Edge> extended = sorted(*run("labeling-holes", star.points).curve_edges);
@@ -660,15 +661,15 @@ TEST(LabelingHoles, TheShapeHullIsNotTakenWhereItsOneCurveCannotHoldTheSamples) 
   const DelaunayVoronoi dv = build_delaunay_voronoi(nested.points);
   std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
   const std::vector<std::uint8_t> paper = inner;
-  EXPECT_FALSE(take_the_shape_hull_through_every_sample(dv, inner, curve_edges_per_sample(dv, inner)));
+  EXPECT_FALSE(take_the_shape_hull_through_every_sample(dv, inner));
   EXPECT_EQ(inner, paper);
 }
 
 TEST(LabelingHoles, TheShapeHullIsNotTakenWhereTheLabelsHoldSeveralCurves) {
   // Two unit squares 0.5 apart, their facing sides sampled at the corners only: shape-hull
   // goes around both, through every sample, with two bridges. Labels that hold the two
-  // squares as two curves, with one triangle flipped to make a fault, keep their two curves:
-  // the shape-hull's one curve is not what they show.
+  // squares as two curves, with one triangle flipped to make a fault, are not one connected
+  // curve, so step 11 keeps them: the shape-hull's one curve is not what they show.
   std::vector<Point2> points;
   for (int i = 0; i < 4; ++i) points.push_back({i / 4.0, 0.0});
   points.push_back({1.0, 0.0});
@@ -700,9 +701,8 @@ TEST(LabelingHoles, TheShapeHullIsNotTakenWhereTheLabelsHoldSeveralCurves) {
   inner[flipped] = 0;
   const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
   ASSERT_NE(std::count(curve_edges.begin(), curve_edges.end(), 2), dv.site_count());
-  const std::vector<std::uint8_t> faulty = inner;
-  EXPECT_FALSE(take_the_shape_hull_through_every_sample(dv, inner, curve_edges));
-  EXPECT_EQ(inner, faulty);
+  EXPECT_FALSE(curve_edges_form_one_connected_curve(dv, inner, curve_edges));
+  EXPECT_TRUE(curve_edges_form_one_connected_curve(dv, shape_hull_triangles(dv), shape_hull_edges));
 }
 
 TEST(LabelingHoles, ThePocketsOfAnSThePaperClosedOffAreOpened) {
@@ -760,6 +760,47 @@ TEST(LabelingHoles, ValleysClosedAtTheirMouthsAreOpenedAndTheTipsTheyCutOffJoine
     EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), truth) << what;
     EXPECT_NE(sorted(*run("labeling", input.points).curve_edges), truth) << what;
   }
+}
+
+TEST(LabelingHoles, APocketThatSplitsTheCurveIsReportedAndTheShapeHullTaken) {
+  // sparse_outlines.json's star at 50 random samples, seed 1: the paper's chord 41-48 closes
+  // off the valley whose walls run 48-...-43, and the tip 39-40-41-42 beside it. Opened from
+  // that one mouth, with 42 joined again, the tip is a loop of its own and 43 joins 38: every
+  // sample has two curve edges, on two curves. Step 8 reports the split; the paper's labels
+  // were one curve, so step 11 takes the shape-hull, which is the star's own curve.
+  const GeneratedInput star = sparse_outline("star", 50, 1);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(star.points);
+  VoronoiLabels labels = label_voronoi_vertices(dv);
+  std::vector<int> enclosed;
+  for (int s = 0; s < dv.site_count(); ++s) {
+    if (labels.source_vertex[s] == kUnpaired && dv.site_triangle[s] >= 0) enclosed.push_back(s);
+  }
+  const OpenedPockets pockets = open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed);
+  EXPECT_GT(pockets.relabelled, 0);
+  EXPECT_TRUE(pockets.split_a_curve);
+  const std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);
+  EXPECT_TRUE(every_sample_has_two_curve_edges(dv, curve_edges));
+  EXPECT_FALSE(curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges));
+  const std::vector<Edge> truth = sorted(star.truth.edges);
+  EXPECT_NE(sorted(*run("labeling", star.points).curve_edges), truth);
+  const std::vector<Edge> extended = sorted(*run("labeling-holes", star.points).curve_edges);
+  EXPECT_EQ(extended, truth);
+  EXPECT_EQ(extended, sorted(*run("shape-hull", star.points).curve_edges));
+}
+
+TEST(LabelingHoles, APocketOpenedFromOneMouthAndJoinedIntoOneCurveIsNotReportedAsASplit) {
+  // The star at 50 random samples, seed 5 (below): the valley opened from the mouth 12-25, its
+  // tip 24-25 joined again, all on one curve.
+  const GeneratedInput star = sparse_outline("star", 50, 5);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(star.points);
+  VoronoiLabels labels = label_voronoi_vertices(dv);
+  std::vector<int> enclosed;
+  for (int s = 0; s < dv.site_count(); ++s) {
+    if (labels.source_vertex[s] == kUnpaired && dv.site_triangle[s] >= 0) enclosed.push_back(s);
+  }
+  const OpenedPockets pockets = open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed);
+  EXPECT_GT(pockets.relabelled, 0);
+  EXPECT_FALSE(pockets.split_a_curve);
 }
 
 TEST(LabelingHoles, AWalkFromAMouthThatTakesTrueCurveEdgesOffStaysClosed) {

@@ -41,24 +41,26 @@ namespace {
 // the pocket's side of its walls, the walk runs down the pocket as if it were the interior,
 // and a pinched part there (a glyph's crossbar inside the closed-off pocket of a `G`) is the
 // walk going astray. A part with a branching boundary keeps the paper's labels too.
-std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& region,
-                                            const RegionWalk& walk, const std::vector<int>& enclosed_samples) {
+std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std::vector<int>& unkept_vertices,
+                                            const std::vector<int>& enclosed_samples) {
   std::vector<int> across;
   std::vector<std::uint8_t> enclosed(dv.site_count(), 0);
   for (int site : enclosed_samples) enclosed[site] = 1;
-  // Per vertex: whether it belongs to a part, found once for the unkept vertices, and whether
-  // a part has grown through it, so that growing reads one byte per neighbour.
-  enum : std::uint8_t { kInAPart = 1, kSeen = 2 };
+  // Per vertex: whether the walk left it unkept, whether it belongs to a part (found once for
+  // the unkept vertices), and whether a part has grown through it, so that growing reads one
+  // byte per neighbour.
+  enum : std::uint8_t { kUnkept = 1, kInAPart = 2, kSeen = 4 };
   std::vector<std::uint8_t> part_state(dv.triangle_count(), 0);
-  for (int t : walk.unkept) {
+  for (int t : unkept_vertices) {
     const auto& tri = dv.triangles[t];
-    if (enclosed[tri[0]] && enclosed[tri[1]] && enclosed[tri[2]]) part_state[t] = kInAPart;
+    const bool all_enclosed = enclosed[tri[0]] && enclosed[tri[1]] && enclosed[tri[2]];
+    part_state[t] = all_enclosed ? kUnkept | kInAPart : kUnkept;
   }
   std::vector<int> boundary_degree(dv.site_count(), 0);
   std::vector<int> part, stack;
   std::vector<Edge> boundary;
-  auto unkept = [&](int t) { return t != kInfinite && region[t] && !walk.kept[t]; };
-  auto in_a_part = [&](int t) { return t != kInfinite && part_state[t] != 0; };
+  auto unkept = [&](int t) { return t != kInfinite && (part_state[t] & kUnkept) != 0; };
+  auto in_a_part = [&](int t) { return t != kInfinite && (part_state[t] & kInAPart) != 0; };
 
   bool pinched = false;
   auto grow_part = [&](int start) {
@@ -110,8 +112,8 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
   std::vector<Edge> pinched_boundaries;
   std::vector<std::array<std::size_t, 2>> pinched_ends;
   // Every vertex of a part is one the walk did not keep, so a scan of those finds every part.
-  for (int t : walk.unkept) {
-    if (part_state[t] != kInAPart) continue;  // in no part, or in one grown already
+  for (int t : unkept_vertices) {
+    if ((part_state[t] & (kInAPart | kSeen)) != kInAPart) continue;  // in no part, or in one grown already
     grow_part(t);
     if (!closed_through_enclosed_samples()) continue;
     if (pinched) {
@@ -183,8 +185,8 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     region_vertices.resize(count);
     bool first_level = true;
     while (!enclosed.empty()) {
-      const RegionWalk walk = walk_region_from_its_boundary(dv, region, region_vertices);
-      std::vector<int> flipped = parts_across_missed_curves(dv, region, walk, enclosed);
+      const std::vector<int> unkept = walk_region_from_its_boundary(dv, region, region_vertices);
+      std::vector<int> flipped = parts_across_missed_curves(dv, unkept, enclosed);
       if (flipped.empty()) break;  // no next region, so no evidence in it
       first_level = false;
       found_missed_curves = true;
@@ -252,10 +254,8 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     }
   }
   // Step 11 (shape_hull_through_every_sample.h) where the labels end with a fault and hold one
-  // curve, or where step 8 split their one curve; not where missed curves were found, which
-  // shape-hull's one curve cannot hold.
+  // curve, or where step 8 split their one curve.
   auto take_the_shape_hull_where_one_curve_is_wrong = [&](const std::vector<int>& curve_edges) {
-    if (found_missed_curves) return;
     if (pockets_split_one_curve || (!every_sample_has_two_curve_edges(dv, curve_edges) &&
                                     curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges))) {
       take_the_shape_hull_through_every_sample(dv, labels.inner);
@@ -265,9 +265,11 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   // in the last region, all of one label, so they have no curve edge. Unless step 10 puts them
   // on the curve, the repairs below would leave the labels as they are unless every sample
   // has two (steps 6 and 7 of the rule), and step 9 joins no enclosed sample. Labels that end
-  // with a sample off the curve or on a pinch go to step 11.
+  // with a sample off the curve or on a pinch go to step 11, unless missed curves were found,
+  // which shape-hull's one curve cannot hold (tested first: noisy input, where step 4 takes
+  // such curves, pays no pass counting curve edges).
   if (!enclosed.empty() && !open_corridors_over_the_evidence()) {
-    take_the_shape_hull_where_one_curve_is_wrong(curve_edges_per_sample(dv, labels.inner));
+    if (!found_missed_curves) take_the_shape_hull_where_one_curve_is_wrong(curve_edges_per_sample(dv, labels.inner));
     return labels;
   }
   // One count of curve edges serves both repairs unless the first changes the labels.
@@ -280,7 +282,7 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   }
   // Corridors without swallowed samples, on a 1-manifold: from every triangle.
   if (!every_sample_has_two_curve_edges(dv, curve_edges)) {
-    take_the_shape_hull_where_one_curve_is_wrong(curve_edges);
+    if (!found_missed_curves) take_the_shape_hull_where_one_curve_is_wrong(curve_edges);
     return labels;
   }
   split_curves_joined_across_a_corridor(dv, labels.inner);

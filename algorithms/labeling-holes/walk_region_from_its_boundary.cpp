@@ -1,15 +1,14 @@
 #include "labeling-holes/walk_region_from_its_boundary.h"
 
 #include <cstdint>
-#include <utility>
 
 #include "labeling/walk_steps.h"
 #include "voronoi/sort_by_decreasing_circumradius.h"
 
 namespace curvebench {
 
-RegionWalk walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region,
-                                         std::span<const int> region_vertices) {
+std::vector<int> walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region,
+                                               std::span<const int> region_vertices) {
   // One byte of flags per vertex, so that a step of the walk reads one array, not four.
   enum : std::uint8_t { kInRegion = 1, kSeed = 2, kVisited = 4, kKept = 8 };
   std::vector<std::uint8_t> state(dv.triangle_count(), 0);
@@ -55,17 +54,14 @@ RegionWalk walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<co
     __builtin_prefetch(&dv.neighbors[root]);
     __builtin_prefetch(&dv.circumcenters[root]);
   });
-  RegionWalk walk;
-  walk.unkept.resize(region_vertices.size());
+  std::vector<int> unkept(region_vertices.size());
   std::size_t unkept_count = 0;
   for (int t : region_vertices) {
-    walk.unkept[unkept_count] = t;
+    unkept[unkept_count] = t;
     unkept_count += (state[t] & kKept) == 0;
   }
-  walk.unkept.resize(unkept_count);
-  for (auto& flags : state) flags = (flags & kKept) != 0;
-  walk.kept = std::move(state);
-  return walk;
+  unkept.resize(unkept_count);
+  return unkept;
 }
 
 }  // namespace curvebench

@@ -17,9 +17,8 @@
 // In:  Delaunay/Voronoi arrays; `region[t]` nonzero for the region's vertices, and those
 //      vertices listed in ascending order (`region_vertices`), so that a small region (a
 //      nesting level below the first) costs no pass over all triangles.
-// Out: `kept`, per triangle, 1 for the region vertices the walk reached without stopping (they
-//      stay on the region's side), 0 for the stopped ones, the unreached ones and those
-//      outside the region; `unkept`, the region vertices with 0, ascending.
+// Out: the region vertices the walk did not keep (stopped or unreached), ascending; the kept
+//      ones stay on the region's side.
 #pragma once
 
 #include <cstdint>
@@ -30,12 +29,7 @@
 
 namespace curvebench {
 
-struct RegionWalk {
-  std::vector<std::uint8_t> kept;
-  std::vector<int> unkept;
-};
-
-RegionWalk walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region,
-                                         std::span<const int> region_vertices);
+std::vector<int> walk_region_from_its_boundary(const DelaunayVoronoi& dv, std::span<const std::uint8_t> region,
+                                               std::span<const int> region_vertices);
 
 }  // namespace curvebench

@@ -140,6 +140,23 @@ GeneratedInput sparse_outline(const std::string& family, int count, std::uint64_
   return generate(settings);
 }
 
+// The paper's labels of `points` and the samples they leave enclosed: the unpaired ones with a
+// cell, read off the sources as label_voronoi_vertices_with_holes.cpp does.
+struct PaperLabelsAndEvidence {
+  DelaunayVoronoi dv;
+  VoronoiLabels labels;
+  std::vector<int> enclosed;
+};
+
+PaperLabelsAndEvidence paper_labels_and_evidence(const std::vector<Point2>& points) {
+  PaperLabelsAndEvidence paper{build_delaunay_voronoi(points), {}, {}};
+  paper.labels = label_voronoi_vertices(paper.dv);
+  for (int s = 0; s < paper.dv.site_count(); ++s) {
+    if (paper.labels.source_vertex[s] == kUnpaired && paper.dv.site_triangle[s] >= 0) paper.enclosed.push_back(s);
+  }
+  return paper;
+}
+
 // On the disjoint family at (epsilon, seed): labeling's curve is not the truth, labeling-holes' is.
 void expect_the_paper_wrong_and_the_extension_exact(double epsilon, std::uint64_t seed) {
   const GeneratedInput input = disjoint_curves(epsilon, seed);
@@ -174,13 +191,7 @@ TEST(LabelingHoles, APocketsWallsStandApartFromTheCurveTheyContinue) {
   // long; those neighbours continue the curve the walls join and count as on it. Step 8 alone
   // on the paper's labels opens the corridor's three triangles (step 10 would open it too).
   expect_the_paper_wrong_and_the_extension_exact(0.9, 4);
-  const GeneratedInput input = disjoint_curves(0.9, 4);
-  const DelaunayVoronoi dv = build_delaunay_voronoi(input.points);
-  VoronoiLabels labels = label_voronoi_vertices(dv);
-  std::vector<int> enclosed;
-  for (int s = 0; s < dv.site_count(); ++s) {
-    if (labels.source_vertex[s] == kUnpaired && dv.site_triangle[s] >= 0) enclosed.push_back(s);
-  }
+  auto [dv, labels, enclosed] = paper_labels_and_evidence(disjoint_curves(0.9, 4).points);
   ASSERT_EQ(enclosed.size(), 1u);
   EXPECT_EQ(dv.input_of_site[enclosed[0]], 30);
   const std::vector<std::uint8_t> paper = labels.inner;
@@ -769,12 +780,7 @@ TEST(LabelingHoles, APocketThatSplitsTheCurveIsReportedAndTheShapeHullTaken) {
   // sample has two curve edges, on two curves. Step 8 reports the split; the paper's labels
   // were one curve, so step 11 takes the shape-hull, which is the star's own curve.
   const GeneratedInput star = sparse_outline("star", 50, 1);
-  const DelaunayVoronoi dv = build_delaunay_voronoi(star.points);
-  VoronoiLabels labels = label_voronoi_vertices(dv);
-  std::vector<int> enclosed;
-  for (int s = 0; s < dv.site_count(); ++s) {
-    if (labels.source_vertex[s] == kUnpaired && dv.site_triangle[s] >= 0) enclosed.push_back(s);
-  }
+  auto [dv, labels, enclosed] = paper_labels_and_evidence(star.points);
   const OpenedPockets pockets = open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed);
   EXPECT_GT(pockets.relabelled, 0);
   EXPECT_TRUE(pockets.split_a_curve);
@@ -789,15 +795,9 @@ TEST(LabelingHoles, APocketThatSplitsTheCurveIsReportedAndTheShapeHullTaken) {
 }
 
 TEST(LabelingHoles, APocketOpenedFromOneMouthAndJoinedIntoOneCurveIsNotReportedAsASplit) {
-  // The star at 50 random samples, seed 5 (below): the valley opened from the mouth 12-25, its
-  // tip 24-25 joined again, all on one curve.
-  const GeneratedInput star = sparse_outline("star", 50, 5);
-  const DelaunayVoronoi dv = build_delaunay_voronoi(star.points);
-  VoronoiLabels labels = label_voronoi_vertices(dv);
-  std::vector<int> enclosed;
-  for (int s = 0; s < dv.site_count(); ++s) {
-    if (labels.source_vertex[s] == kUnpaired && dv.site_triangle[s] >= 0) enclosed.push_back(s);
-  }
+  // The star at 50 random samples, seed 5 (ValleysClosedAtTheirMouthsAreOpened... above): the
+  // valley opened from the mouth 12-25, its tip joined again, all on one curve.
+  auto [dv, labels, enclosed] = paper_labels_and_evidence(sparse_outline("star", 50, 5).points);
   const OpenedPockets pockets = open_pockets_closed_at_their_mouths(dv, labels.inner, enclosed);
   EXPECT_GT(pockets.relabelled, 0);
   EXPECT_FALSE(pockets.split_a_curve);

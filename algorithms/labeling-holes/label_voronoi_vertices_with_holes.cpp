@@ -15,6 +15,7 @@
 #include "labeling-holes/relabel_bridging_ears.h"
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
 #include "labeling-holes/shape_hull_through_every_sample.h"
+#include "labeling-holes/shape_hull_where_it_is_shorter.h"
 #include "labeling-holes/split_curves_joined_across_a_corridor.h"
 #include "labeling-holes/walk_region_from_its_boundary.h"
 
@@ -159,6 +160,7 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
 
 VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   VoronoiLabels labels = label_voronoi_vertices(dv);
+  const std::vector<std::uint8_t> papers_inner = labels.inner;  // step 12 leaves the paper's own labels alone
   // After the paper's walks, a sample's cell holds an outer vertex exactly when a walk paired
   // the sample: every outer vertex is one a walk kept, keeping it pairs its unpaired samples
   // (Algorithm 1, lines 1-2), a sample is paired only by a vertex a walk keeps, and hull
@@ -286,7 +288,15 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     return labels;
   }
   split_curves_joined_across_a_corridor(dv, labels.inner);
-  if (pockets_split_one_curve && !found_missed_curves) take_the_shape_hull_through_every_sample(dv, labels.inner);
+  if (found_missed_curves) return labels;
+  if (pockets_split_one_curve) {
+    take_the_shape_hull_through_every_sample(dv, labels.inner);
+  } else if (labels.inner != papers_inner && curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges)) {
+    // Step 12 (shape_hull_where_it_is_shorter.h): repaired labels, one closed curve through
+    // every sample, against shape-hull's tour. Step 10 leaves every sample two curve edges,
+    // so the counts from before it still say which samples are on the curve.
+    take_the_shape_hull_where_it_is_shorter(dv, labels.inner);
+  }
   return labels;
 }
 

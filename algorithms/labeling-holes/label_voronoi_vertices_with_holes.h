@@ -30,7 +30,9 @@
 // crust test reads as outside are opened (split_curves_joined_across_a_corridor.h). Labels
 // that still leave a sample off the curve or on a pinch, on one connected curve, give way to
 // the shape-hull's triangles when its curve passes through every sample
-// (shape_hull_through_every_sample.h).
+// (shape_hull_through_every_sample.h). Repaired labels that make one closed curve through
+// every sample give way to them too where the shape-hull's tour is shorter
+// (shape_hull_where_it_is_shorter.h).
 //
 // In:  the Delaunay/Voronoi arrays of samples of one or more closed curves, nested or not.
 // Out: the paper's VoronoiLabels (sources and counters from label_voronoi_vertices) with

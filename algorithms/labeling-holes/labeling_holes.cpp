@@ -13,7 +13,8 @@ namespace {
     "labeling-holes",
     "Incremental Voronoi-vertex labeling (Peethambaran, Parakkat, Tagliasacchi, Wang, Muthuganapathy; CGF 2019), "
     "with walks inside the regions it cannot reach (holes and nested curves), its bridges between curves relabelled, "
-    "and shape-hull's curve where its labels leave samples off one connected curve and shape-hull's passes through every sample",
+    "and shape-hull's curve where it passes through every sample and the labels leave samples off one connected curve, "
+    "or repaired them into a longer one",
     label_voronoi_vertices_with_holes));
 
 }  // namespace

@@ -828,8 +828,8 @@ TEST(LabelingHoles, TheShapeHullIsTakenOnlyWhereItsTourIsStrictlyShorter) {
   // against every triangle inner (the convex hull, shorter than the star), shape-hull's
   // curve through every sample is not taken.
   const DelaunayVoronoi dv = build_delaunay_voronoi(sparse_outline("star", 80, 2).points);
+  ASSERT_TRUE(every_sample_has_two_curve_edges(dv, curve_edges_per_sample(dv, shape_hull_triangles(dv))));
   for (std::vector<std::uint8_t> inner : {shape_hull_triangles(dv), std::vector<std::uint8_t>(dv.triangle_count(), 1)}) {
-    ASSERT_TRUE(every_sample_has_two_curve_edges(dv, curve_edges_per_sample(dv, shape_hull_triangles(dv))));
     const std::vector<std::uint8_t> before = inner;
     EXPECT_FALSE(take_the_shape_hull_where_it_is_shorter(dv, inner));
     EXPECT_EQ(inner, before);
@@ -845,6 +845,12 @@ TEST(LabelingHoles, ThePapersOwnOneCurveStandsWhereTheShapeHullIsShorter) {
   const std::vector<Edge> paper = sorted(*run("labeling", circle.points).curve_edges);
   EXPECT_NE(paper, truth);
   EXPECT_EQ(sorted(*run("shape-hull", circle.points).curve_edges), truth);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(circle.points);
+  std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
+  const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
+  EXPECT_TRUE(every_sample_has_two_curve_edges(dv, curve_edges));
+  EXPECT_TRUE(curve_edges_form_one_connected_curve(dv, inner, curve_edges));
+  EXPECT_TRUE(take_the_shape_hull_where_it_is_shorter(dv, inner));  // it would be taken if compared
   EXPECT_EQ(sorted(*run("labeling-holes", circle.points).curve_edges), paper);
 }
 

@@ -81,7 +81,7 @@ def main(argv=None):
     commands = parser.add_subparsers(dest="command", required=True)
     glyphs = commands.add_parser("glyphs", help="glyph outlines of DejaVu Sans")
     glyphs.add_argument("--out", required=True, help="directory to write glyph_<codepoint>.rings into")
-    glyphs.add_argument("--chars", default=DEFAULT_CHARS, help=f"characters (default {DEFAULT_CHARS!r})")
+    glyphs.add_argument("--chars", default=DEFAULT_CHARS, help=f"characters (default {DEFAULT_CHARS!r})".replace("%", "%%"))  # argparse formats help with %
     png = commands.add_parser("png", help="a binary PNG silhouette")
     png.add_argument("image")
     png.add_argument("--out", required=True, help="rings file to write")

@@ -116,6 +116,14 @@ def test_glyph_outlines_are_the_default_real_shapes(run, tmp_path):
     assert curves == {"glyph_0042": 3, "glyph_0038": 3, "glyph_0026": 2}  # B and 8: two holes; &: one
 
 
+def test_real_outlines_help_prints_for_every_command():
+    # argparse formats help texts with %: the default glyphs include a '%'.
+    for command in ([], ["glyphs"], ["png"]):
+        result = real_outlines(*command, "--help")
+        assert result.returncode == 0, result.stderr
+        assert "usage:" in result.stdout
+
+
 def test_png_silhouette_traced_with_holes(run, tmp_path):
     import numpy as np
     import matplotlib.pyplot as plt

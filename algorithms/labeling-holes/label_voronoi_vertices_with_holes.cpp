@@ -160,7 +160,6 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
 
 VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   VoronoiLabels labels = label_voronoi_vertices(dv);
-  const std::vector<std::uint8_t> papers_inner = labels.inner;  // step 12 leaves the paper's own labels alone
   // After the paper's walks, a sample's cell holds an outer vertex exactly when a walk paired
   // the sample: every outer vertex is one a walk kept, keeping it pairs its unpaired samples
   // (Algorithm 1, lines 1-2), a sample is paired only by a vertex a walk keeps, and hull
@@ -170,6 +169,10 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   for (int s = 0; s < dv.site_count(); ++s) {
     if (labels.source_vertex[s] == kUnpaired && dv.site_triangle[s] >= 0) enclosed.push_back(s);
   }
+  // Step 12 compares only labels the rule changed. With evidence it always has where it gets
+  // there (an enclosed sample has no curve edge under the paper's labels, two there);
+  // without, steps 6, 7, 9 and 10 say so by what they relabel.
+  bool repaired = !enclosed.empty();
   // Steps 2-5, one nesting level at a time from the inner region; true when no part was
   // taken at the first level (the region is still every inner vertex).
   std::vector<std::uint8_t> region;
@@ -276,10 +279,14 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   }
   // One count of curve edges serves both repairs unless the first changes the labels.
   std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);
-  if (relabel_bridging_ears(dv, labels.inner, curve_edges) > 0) curve_edges = curve_edges_per_sample(dv, labels.inner);
-  relabel_inner_vertices_outside_the_hull(dv, labels.inner, curve_edges);
+  if (relabel_bridging_ears(dv, labels.inner, curve_edges) > 0) {
+    repaired = true;
+    curve_edges = curve_edges_per_sample(dv, labels.inner);
+  }
+  repaired |= relabel_inner_vertices_outside_the_hull(dv, labels.inner, curve_edges) > 0;
   // Steps 6 and 7 change nothing while a sample has no curve edge, so the counts still hold.
   if (join_lone_samples_to_the_curve(dv, labels.inner, curve_edges) > 0) {
+    repaired = true;
     curve_edges = curve_edges_per_sample(dv, labels.inner);
   }
   // Corridors without swallowed samples, on a 1-manifold: from every triangle.
@@ -287,11 +294,11 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     if (!found_missed_curves) take_the_shape_hull_where_one_curve_is_wrong(curve_edges);
     return labels;
   }
-  split_curves_joined_across_a_corridor(dv, labels.inner);
+  repaired |= !split_curves_joined_across_a_corridor(dv, labels.inner).empty();
   if (found_missed_curves) return labels;
   if (pockets_split_one_curve) {
     take_the_shape_hull_through_every_sample(dv, labels.inner);
-  } else if (labels.inner != papers_inner && curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges)) {
+  } else if (repaired && curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges)) {
     // Step 12 (shape_hull_where_it_is_shorter.h): repaired labels, one closed curve through
     // every sample, against shape-hull's tour. Step 10 leaves every sample two curve edges,
     // so the counts from before it still say which samples are on the curve.

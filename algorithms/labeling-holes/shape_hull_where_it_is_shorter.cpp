@@ -3,8 +3,7 @@
 #include <cmath>
 #include <utility>
 
-#include "labeling-holes/curve_edges_per_sample.h"
-#include "shape-hull/shape_hull_triangles.h"
+#include "labeling-holes/shape_hull_through_every_sample.h"
 
 namespace curvebench {
 namespace {
@@ -28,9 +27,8 @@ double curve_length(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& 
 }  // namespace
 
 bool take_the_shape_hull_where_it_is_shorter(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner) {
-  if (dv.dimension != 2) return false;
-  std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
-  if (!every_sample_has_two_curve_edges(dv, curve_edges_per_sample(dv, shape))) return false;
+  std::vector<std::uint8_t> shape = inner;
+  if (!take_the_shape_hull_through_every_sample(dv, shape)) return false;
   // Strictly shorter: on a tie (the same curve, or two of equal length) the repaired labels stay.
   if (!(curve_length(dv, shape) < curve_length(dv, inner))) return false;
   inner = std::move(shape);

@@ -1,9 +1,10 @@
 #include "stretchdenoise/denoise_along_normals.h"
 
 #include "core/denoised_curve.h"
+#include "stretchdenoise/bounded_least_squares.h"
 
-#include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include <algorithm>
 #include <cmath>
@@ -220,11 +221,14 @@ std::vector<Component> components(const FittedNeighborhoods& fits, const Oriente
 
 double signed_distance_right(Point2 s, Point2 a, Point2 b) { return -cross(b - a, s - a) / distance(a, b); }
 
-// Hat weight of vertex a at sample s on edge (a, o), clamped to [0, 1]. The reference maps
-// negative values to 0.1 to avoid zero columns; the Schur step below handles a zero row.
+// Hat weight of vertex a at sample s on edge (a, o), as spec 2.9 has it: above 1 (s projects
+// behind a) it is 1; below 0 (s projects beyond o) it is 0.1, not 0, so a sample beyond the
+// neighbouring vertex still weighs a little on a. A sample at o itself gets exactly 0 (here in
+// double precision; the reference's float32 rounding makes that 0 or 0.1).
 double hat_weight(Point2 s, Point2 a, Point2 o) {
   const Point2 edge = o - a;
-  return std::clamp(1 - dot(edge, s - a) / dot(edge, edge), 0.0, 1.0);
+  const double h = 1 - dot(edge, s - a) / dot(edge, edge);
+  return h < 0 ? 0.1 : std::min(h, 1.0);
 }
 
 // Signed distance along unit n from p to the line through v0, v1 (positive when the line lies
@@ -303,69 +307,6 @@ class WindowSolver {
   std::vector<Point2>& positions_;
   const std::vector<Point2>& normals_;
   const std::vector<std::vector<int>>& samples_by_key_;
-
-  // min |Hx - y|^2 s.t. c.x = b, lower <= x <= upper, as the reference's model (spec 2.9):
-  // solve with the constraint by a Schur step on a sparse LDL^T of H^T H, clamp and freeze
-  // every value outside its bounds, re-solve the rest, until all free values are inside.
-  static Eigen::VectorXd bounded_least_squares(const std::vector<Eigen::Triplet<double>>& entries,
-                                               const std::vector<double>& y, const Eigen::VectorXd& c, double b,
-                                               const Eigen::VectorXd& lower, const Eigen::VectorXd& upper) {
-    const int k = static_cast<int>(c.size()), rows = static_cast<int>(y.size());
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(k);
-    std::vector<char> frozen(k, 0);
-    const Eigen::Map<const Eigen::VectorXd> y_full(y.data(), rows);
-    while (true) {
-      std::vector<int> column_of(k, kNone), free_columns;
-      for (int j = 0; j < k; ++j)
-        if (!frozen[j]) column_of[j] = static_cast<int>(free_columns.size()), free_columns.push_back(j);
-      const int f = static_cast<int>(free_columns.size());
-      if (f == 0) break;
-      // Frozen values move to the right-hand sides.
-      Eigen::VectorXd y_free = y_full;
-      double b_free = b;
-      std::vector<Eigen::Triplet<double>> free_entries;
-      for (const auto& e : entries) {
-        if (frozen[e.col()])
-          y_free[e.row()] -= e.value() * x[e.col()];
-        else
-          free_entries.emplace_back(e.row(), column_of[e.col()], e.value());
-      }
-      Eigen::VectorXd c_free(f);
-      for (int j = 0; j < k; ++j) {
-        if (frozen[j])
-          b_free -= c[j] * x[j];
-        else
-          c_free[column_of[j]] = c[j];
-      }
-      Eigen::SparseMatrix<double> h(rows, f);
-      h.setFromTriplets(free_entries.begin(), free_entries.end());
-      Eigen::SparseMatrix<double> normal = h.transpose() * h;
-      // A tiny ridge keeps collinear windows (zero angle rows) solvable: the limit is the
-      // minimum-norm solution, where the reference's explicit inverse gives NaN.
-      double largest = 0;
-      for (int j = 0; j < f; ++j) largest = std::max(largest, normal.coeff(j, j));
-      const double ridge = largest > 0 ? 1e-12 * largest : 1.0;
-      Eigen::SparseMatrix<double> identity(f, f);
-      identity.setIdentity();
-      normal += ridge * identity;
-      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factor(normal);
-      if (factor.info() != Eigen::Success) break;
-      const Eigen::VectorXd g = factor.solve(h.transpose() * y_free);
-      const Eigen::VectorXd z = factor.solve(c_free);
-      const double schur = c_free.dot(z);
-      // A zero constraint row (no samples weigh on the free vertices) leaves plain least squares.
-      const Eigen::VectorXd solution = schur > 0 ? Eigen::VectorXd(g - ((c_free.dot(g) - b_free) / schur) * z) : g;
-      bool clamped = false;
-      for (int i = 0; i < f; ++i) {
-        const int j = free_columns[i];
-        x[j] = solution[i];
-        if (!(x[j] >= lower[j])) x[j] = lower[j], frozen[j] = 1, clamped = true;
-        else if (x[j] > upper[j]) x[j] = upper[j], frozen[j] = 1, clamped = true;
-      }
-      if (!clamped) break;
-    }
-    return x;
-  }
 };
 
 // Spec 2.8 on one component: grow each window forward then backward while one line fits the

@@ -206,8 +206,10 @@ double mean_vertex_distance(const std::vector<Segment2>& curve, const std::vecto
 // a band of half-width `band` times the local feature size. Given the band as its noise extent
 // (a sensor model; the smallest band of any sample, so that no extent exceeds its sample's),
 // StretchDenoise brings the vertices markedly closer to the true curve. With extents estimated
-// from pass 1 (the default) most samples are frozen (a 3-point fit interpolates, spec 2.4), and
-// neither it nor FitConnect's blend may move the vertices farther from the curve on average.
+// from pass 1 (the default) most samples are frozen (a 3-point fit interpolates, spec 2.4): the
+// few that move, within tiny extents, to the optimum of the model's angles and balance (not of
+// their distance to the curve), leave the mean distance within 0.01% of the input's, and
+// FitConnect's blend must not move the vertices farther from the curve on average.
 void expect_denoising_on_smooth_families(double band) {
   for (const std::string family : {"circle", "ellipse", "superellipse", "rose", "random", "dumbbell"}) {
     for (std::uint64_t seed : {1u, 2u}) {
@@ -230,13 +232,36 @@ void expect_denoising_on_smooth_families(double band) {
 
       const DenoisedCurve estimated = stretch_denoise(input.points);
       EXPECT_LE(mean_vertex_distance(curve, estimated.positions, estimated.edges),
-                mean_vertex_distance(curve, input.points, estimated.edges) * (1 + 1e-9))
+                mean_vertex_distance(curve, input.points, estimated.edges) * (1 + 1e-4))
           << which;
       const DenoisedCurve blended = fitconnect(input.points);
       EXPECT_LE(mean_vertex_distance(curve, blended.positions, blended.edges),
                 mean_vertex_distance(curve, input.points, blended.edges) * (1 + 1e-9))
           << which;
     }
+  }
+}
+
+// Spec §3: the bounded least-squares problem solved to its optimum, not by the reference's
+// clamping and freezing (a value frozen at its bound never comes back). Random samples of a
+// circle in a band of 0.01 (its radius is 1), given the band as extent: the mean distance to
+// the circle falls by a fifth or more on each of 20 seeds. Clamping and freezing fell short of
+// that on 11 of them (seed 11: 0.99 of the input's).
+TEST(StretchDenoise, GivenTheBandAsExtentEveryRandomCircleComesCloserByAFifth) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    GeneratorSettings settings;
+    settings.family = "circle";
+    settings.sampler = "random";
+    settings.count = 150;
+    settings.noise = 0.01;
+    settings.noise_model = "uniform";
+    settings.seed = seed;
+    const GeneratedInput input = generate(settings);
+    const std::vector<Segment2> curve = true_curve_segments(input.truth);
+    const DenoisedCurve denoised = stretch_denoise(input.points, 0.01);
+    EXPECT_LT(mean_vertex_distance(curve, denoised.positions, denoised.edges),
+              0.8 * mean_vertex_distance(curve, input.points, denoised.edges))
+        << "seed " << seed;
   }
 }
 

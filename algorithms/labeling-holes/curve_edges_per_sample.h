@@ -16,6 +16,20 @@ namespace curvebench {
 
 std::vector<int> curve_edges_per_sample(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner);
 
+// visit(a, b) for each curve edge, its two sites, once, from its inner side: one pass over the
+// inner triangles.
+template <class Visit>
+void for_each_curve_edge(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, Visit&& visit) {
+  for (int t = 0; t < dv.triangle_count(); ++t) {
+    if (!inner[t]) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int next = dv.neighbors[t][k];
+      if (next != kInfinite && inner[next]) continue;
+      visit(dv.triangles[t][(k + 1) % 3], dv.triangles[t][(k + 2) % 3]);
+    }
+  }
+}
+
 // visit(end, t, next) for each curve edge site-end at one sample (with a cell: site_triangle
 // >= 0), t and next the triangles on its two sides (next is kInfinite for a hull edge): a walk
 // around its fan, counter-clockwise from site_triangle (for a hull site the first triangle of

@@ -10,22 +10,17 @@ namespace curvebench {
 
 bool curve_edges_form_one_connected_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                           const std::vector<int>& curve_edges) {
-  // A union-find over the curve edges, from their inner side.
+  // A union-find over the curve edges.
   std::vector<int> parent(dv.site_count());
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int s) {
     while (parent[s] != s) s = parent[s] = parent[parent[s]];
     return s;
   };
-  for (int t = 0; t < dv.triangle_count(); ++t) {
-    if (!inner[t]) continue;
-    for (int k = 0; k < 3; ++k) {
-      const int next = dv.neighbors[t][k];
-      if (next != kInfinite && inner[next]) continue;
-      const int a = root(dv.triangles[t][(k + 1) % 3]), b = root(dv.triangles[t][(k + 2) % 3]);
-      if (a != b) parent[a] = b;
-    }
-  }
+  for_each_curve_edge(dv, inner, [&](int a, int b) {
+    a = root(a), b = root(b);
+    if (a != b) parent[a] = b;
+  });
   int curves = 0;
   for (int s = 0; s < dv.site_count(); ++s) curves += curve_edges[s] > 0 && root(s) == s;
   return curves == 1;

@@ -3,24 +3,18 @@
 #include <cmath>
 #include <utility>
 
+#include "labeling-holes/curve_edges_per_sample.h"
 #include "labeling-holes/shape_hull_through_every_sample.h"
 
 namespace curvebench {
 namespace {
 
-// The total length of the curve edges under `inner`, each counted once from its inner side.
+// The total length of the curve edges under `inner`.
 double curve_length(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner) {
   double length = 0;
-  for (int t = 0; t < dv.triangle_count(); ++t) {
-    if (!inner[t]) continue;
-    for (int k = 0; k < 3; ++k) {
-      const int next = dv.neighbors[t][k];
-      if (next != kInfinite && inner[next]) continue;
-      const Point2& a = dv.sites[dv.triangles[t][(k + 1) % 3]];
-      const Point2& b = dv.sites[dv.triangles[t][(k + 2) % 3]];
-      length += std::hypot(a.x - b.x, a.y - b.y);
-    }
-  }
+  for_each_curve_edge(dv, inner, [&](int a, int b) {
+    length += std::hypot(dv.sites[a].x - dv.sites[b].x, dv.sites[a].y - dv.sites[b].y);
+  });
   return length;
 }
 

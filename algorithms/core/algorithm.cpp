@@ -20,13 +20,15 @@ void require_finite(std::span<const Point2> points, const std::string& algorithm
   }
 }
 
-// The degenerate-input rule every algorithm shares: a curve needs three distinct points that
-// do not all lie on one line.
-void require_a_plane(int distinct, bool collinear, const std::string& algorithm) {
+// The degenerate-input rule every algorithm shares: a curve needs three distinct points, and
+// a closed one needs them not all on one line. Collinear sites reach only the algorithms that
+// declare an output for them.
+void require_sites(int distinct, bool collinear, const AlgorithmInfo& about) {
+  const std::string& algorithm = about.name;
   if (distinct < 3) {
     throw InputError(algorithm + " needs at least 3 distinct points, the input has " + std::to_string(distinct));
   }
-  if (collinear) {
+  if (collinear && about.collinear == CollinearInput::kRefused) {
     throw InputError(algorithm + ": all " + std::to_string(distinct) +
                      " distinct points are collinear, so they bound no closed curve");
   }
@@ -121,14 +123,16 @@ Reconstruction Algorithm::reconstruct(std::span<const Point2> points,
   if (about.input == SiteInput::kDelaunay) {
     const DelaunayVoronoi dv = triangulate(points, about.name);
     timer.lap("delaunay");
-    require_a_plane(dv.site_count(), dv.dimension < 2, about.name);
-    SiteResult site_result = run(Sites{dv.sites, &dv}, parameters, timer);
+    const bool collinear = dv.dimension < 2;
+    require_sites(dv.site_count(), collinear, about);
+    SiteResult site_result = run(Sites{dv.sites, &dv, collinear}, parameters, timer);
     result = to_input(std::move(site_result), dv.input_of_site, dv.site_of_input, about);
   } else {
     DistinctPoints distinct = distinct_points(points);
     timer.lap("distinct_points");
-    require_a_plane(static_cast<int>(distinct.points.size()), all_collinear(distinct.points), about.name);
-    SiteResult site_result = run(Sites{distinct.points, nullptr}, parameters, timer);
+    const bool collinear = all_collinear(distinct.points);
+    require_sites(static_cast<int>(distinct.points.size()), collinear, about);
+    SiteResult site_result = run(Sites{distinct.points, nullptr, collinear}, parameters, timer);
     result = to_input(std::move(site_result), distinct.input_of_point, distinct.point_of_input, about);
   }
   result.timing_ms = timer.finish();

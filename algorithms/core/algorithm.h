@@ -6,7 +6,9 @@
 // checks the parameters, refuses input without a curve to find (no points, fewer than three
 // distinct points, all collinear, a coordinate that is not finite), merges duplicates,
 // builds the Delaunay/Voronoi layer when the algorithm asks for it, times the phases, checks
-// the output and maps it back to input indices.
+// the output and maps it back to input indices. An algorithm whose specification defines its
+// output on collinear sites (an open curve along the line, or nothing) declares so and is
+// given them.
 #pragma once
 
 #include <map>
@@ -44,18 +46,27 @@ enum class SiteInput {
   kDelaunay,        // the shared Delaunay/Voronoi layer of the distinct points (its numbering)
 };
 
+// What the skeleton does with sites that all lie on one line.
+enum class CollinearInput {
+  kRefused,        // InputError: they bound no closed curve
+  kReconstructed,  // run() is given them (the Delaunay layer then has dimension 1, no triangle)
+};
+
 struct AlgorithmInfo {
   std::string name;       // lower case, words joined by '-': the folder's name
   std::string citation;   // one line: the method and where it was published
   unsigned outputs = 0;   // a bitwise or of Output values
   std::vector<ParameterSpec> parameters;
   SiteInput input = SiteInput::kDelaunay;
+  CollinearInput collinear = CollinearInput::kRefused;
 };
 
-// The sites run() works on: distinct, at least three, not all collinear, finite.
+// The sites run() works on: distinct, at least three, finite, not all collinear unless the
+// algorithm declares CollinearInput::kReconstructed.
 struct Sites {
   std::span<const Point2> points;
   const DelaunayVoronoi* delaunay = nullptr;  // set when the algorithm asked for SiteInput::kDelaunay
+  bool collinear = false;                     // all on one line (CollinearInput::kReconstructed only)
 };
 
 // What run() produces, over site indices; the skeleton maps it to input indices.

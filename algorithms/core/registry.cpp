@@ -16,8 +16,8 @@ std::vector<std::unique_ptr<Algorithm>>& registered() {
 
 class EdgesFromDelaunay final : public Algorithm {
  public:
-  EdgesFromDelaunay(std::string name, std::string citation, DelaunayEdgeFunction edges)
-      : info_{std::move(name), std::move(citation), kCurve, {}, SiteInput::kDelaunay}, edges_(edges) {}
+  EdgesFromDelaunay(std::string name, std::string citation, DelaunayEdgeFunction edges, CollinearInput collinear)
+      : info_{std::move(name), std::move(citation), kCurve, {}, SiteInput::kDelaunay, collinear}, edges_(edges) {}
   const AlgorithmInfo& info() const override { return info_; }
   SiteResult run(const Sites& sites, const ParameterValues&, PhaseTimer& timer) const override {
     SiteResult result;
@@ -49,8 +49,9 @@ bool register_algorithm(std::unique_ptr<Algorithm> algorithm) {
   return true;
 }
 
-bool register_delaunay_curve_algorithm(std::string name, std::string citation, DelaunayEdgeFunction edges) {
-  return register_algorithm(std::make_unique<EdgesFromDelaunay>(std::move(name), std::move(citation), edges));
+bool register_delaunay_curve_algorithm(std::string name, std::string citation, DelaunayEdgeFunction edges,
+                                       CollinearInput collinear) {
+  return register_algorithm(std::make_unique<EdgesFromDelaunay>(std::move(name), std::move(citation), edges, collinear));
 }
 
 std::vector<const Algorithm*> all_algorithms() {

@@ -28,7 +28,8 @@ bool register_algorithm(std::unique_ptr<Algorithm> algorithm);
 // output is the curve edges between the Delaunay layer's sites that `edges` computes, timed
 // as one phase named after the algorithm.
 using DelaunayEdgeFunction = std::vector<Edge> (*)(const DelaunayVoronoi&);
-bool register_delaunay_curve_algorithm(std::string name, std::string citation, DelaunayEdgeFunction edges);
+bool register_delaunay_curve_algorithm(std::string name, std::string citation, DelaunayEdgeFunction edges,
+                                       CollinearInput collinear = CollinearInput::kRefused);
 
 }  // namespace curvebench
 
@@ -36,7 +37,7 @@ bool register_delaunay_curve_algorithm(std::string name, std::string citation, D
   [[maybe_unused]] static const bool curvebench_registered_##ClassName = \
       ::curvebench::register_algorithm(std::make_unique<ClassName>())
 
-// CURVEBENCH_REGISTER_DELAUNAY_CURVE_ALGORITHM("name", "citation", edge_function);
-#define CURVEBENCH_REGISTER_DELAUNAY_CURVE_ALGORITHM(name, citation, edges) \
+// CURVEBENCH_REGISTER_DELAUNAY_CURVE_ALGORITHM("name", "citation", edge_function[, CollinearInput]);
+#define CURVEBENCH_REGISTER_DELAUNAY_CURVE_ALGORITHM(name, citation, ...) \
   [[maybe_unused]] static const bool curvebench_registered_delaunay_curve = \
-      ::curvebench::register_delaunay_curve_algorithm(name, citation, edges)
+      ::curvebench::register_delaunay_curve_algorithm(name, citation, __VA_ARGS__)

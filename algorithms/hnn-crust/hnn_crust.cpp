@@ -16,7 +16,10 @@ class HnnCrust final : public Algorithm {
         {integer_parameter("k_max", 15, 2, 1000,
                            "neighbourhood size counting the sample itself: the half-neighbour is sought among its "
                            "k_max - 1 nearest samples (the cap keeps an open arc's endpoints apart)")},
-        SiteInput::kDistinctPoints};
+        SiteInput::kDistinctPoints,
+        // The authors' code joins collinear samples into the path along the line, and so do
+        // the mutual nearest and half-neighbour rules here.
+        CollinearInput::kReconstructed};
     return about;
   }
 

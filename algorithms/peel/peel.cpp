@@ -25,7 +25,9 @@ class Peel final : public Algorithm {
                         "for the samples closer than this, the rest are dropped (0: off)"),
          boolean_parameter("reference_degree_rule", false,
                            "the authors' asymmetric degree count instead of the symmetric filter (for comparison)")},
-        SiteInput::kDelaunay};
+        SiteInput::kDelaunay,
+        // Spec section 2: all collinear, no finite triangle, so nothing to peel and no edges.
+        CollinearInput::kReconstructed};
     return about;
   }
 

@@ -26,7 +26,9 @@ class StretchDenoise final : public Algorithm {
          integer_parameter("max_window", 256, 0, 1000000000,
                            "vertices one least-squares window may grow to (0: unbounded, as the authors' code, whose "
                            "cost grows with the fourth power of a window on a straight run)")},
-        SiteInput::kDistinctPoints};
+        SiteInput::kDistinctPoints,
+        // Pass 1 is FitConnect's, which links collinear samples along the line (fitconnect_algorithm.cpp).
+        CollinearInput::kReconstructed};
     return about;
   }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numeric>
 #include <random>
 #include <string>
 
@@ -113,8 +114,52 @@ INSTANTIATE_TEST_SUITE_P(DegenerateInputs, EveryAlgorithm, ::testing::ValuesIn(a
 TEST(DegenerateInputs, AlgorithmsRefuseWhatHasNoCurveWithTheSameKindOfMessage) {
   for (const Algorithm* algorithm : all_algorithms()) {
     const ParameterAssignments defaults;
-    for (const std::vector<Point2>& points : {std::vector<Point2>{}, std::vector<Point2>{{1, 1}}, std::vector<Point2>{{0, 0}, {1, 1}, {2, 2}}}) {
+    for (const std::vector<Point2>& points : {std::vector<Point2>{}, std::vector<Point2>{{1, 1}}, std::vector<Point2>{{1, 1}, {2, 2}}}) {
       EXPECT_THROW(algorithm->reconstruct(points, defaults), InputError) << algorithm->name() << " with " << points.size() << " points";
+    }
+    const std::vector<Point2> line{{0, 0}, {1, 1}, {2, 2}};
+    if (algorithm->info().collinear == CollinearInput::kRefused) {
+      EXPECT_THROW(algorithm->reconstruct(line, defaults), InputError) << algorithm->name() << " on a line";
+    } else {
+      EXPECT_NO_THROW(algorithm->reconstruct(line, defaults)) << algorithm->name() << " on a line";
+    }
+  }
+}
+
+// The methods whose specifications say what they make of collinear samples are given them:
+// Crawl's chain and HNN-crust's neighbour edges run along the line, FitConnect's fits (and
+// StretchDenoise's pass 1) link evenly spaced samples along it as the authors' code does, and
+// Peel has no triangle to peel. The others refuse, since the sites bound no closed curve.
+TEST(DegenerateInputs, CollinearSamplesAreAnOpenCurveToTheMethodsThatDefineOne) {
+  std::vector<int> order(15);
+  std::iota(order.begin(), order.end(), 0);
+  std::shuffle(order.begin(), order.end(), std::mt19937(5));
+  std::vector<Point2> line;  // sample order[k] is the k-th along the line
+  std::vector<int> rank_of(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) rank_of[order[k]] = static_cast<int>(k);
+  for (int index = 0; index < static_cast<int>(order.size()); ++index) line.push_back({3.0 - 0.5 * rank_of[index], 1.0 + 0.25 * rank_of[index]});
+  std::vector<Edge> path;
+  for (std::size_t k = 1; k < order.size(); ++k) path.push_back(make_edge(order[k - 1], order[k]));
+  std::sort(path.begin(), path.end());
+  const ParameterAssignments defaults;
+  auto edges = [&](const std::string& name) {
+    std::vector<Edge> e = *find_algorithm(name).reconstruct(line, defaults).curve_edges;
+    std::sort(e.begin(), e.end());
+    return e;
+  };
+  EXPECT_EQ(edges("crawl"), path);
+  EXPECT_EQ(edges("hnn-crust"), path);
+  EXPECT_EQ(edges("fitconnect"), path);
+  EXPECT_EQ(edges("stretchdenoise"), path);
+  EXPECT_TRUE(edges("peel").empty());
+  // A line's fits tend to the line itself: FitConnect's blend leaves the samples on it.
+  EXPECT_EQ(*find_algorithm("fitconnect").reconstruct(line, defaults).moved_points, line);
+  for (const std::string name : {"labeling", "labeling-holes", "crust", "nn-crust", "shape-hull"}) {
+    try {
+      find_algorithm(name).reconstruct(line, defaults);
+      ADD_FAILURE() << name << " reconstructed collinear samples";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()), name + ": all 15 distinct points are collinear, so they bound no closed curve");
     }
   }
 }

@@ -264,6 +264,13 @@ std::unique_ptr<ExternalAlgorithm> external_algorithm_from_json(const nlohmann::
   if (format == ExternalOutputFormat::kEdges && (info.outputs & ~(kCurve | kNewCurve))) {
     throw std::runtime_error(at + ".outputs: the edges format holds only a curve; other outputs need \"reconstruction-json\"");
   }
+  if (declaration.contains("collinear_input")) {
+    const Json& collinear = declaration.at("collinear_input");
+    if (collinear != "refused" && collinear != "reconstructed") {
+      throw std::runtime_error(at + ".collinear_input must be \"refused\" or \"reconstructed\"");
+    }
+    info.collinear = collinear == "reconstructed" ? CollinearInput::kReconstructed : CollinearInput::kRefused;
+  }
   if (declaration.contains("parameters")) {
     const Json& parameters = declaration.at("parameters");
     if (!parameters.is_array()) throw std::runtime_error(at + ".parameters must be a list");

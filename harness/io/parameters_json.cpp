@@ -132,6 +132,7 @@ nlohmann::ordered_json algorithm_catalogue(std::span<const Algorithm* const> alg
     entry["name"] = info.name;
     entry["citation"] = info.citation;
     entry["outputs"] = output_names(info.outputs);
+    entry["collinear_input"] = info.collinear == CollinearInput::kReconstructed ? "reconstructed" : "refused";
     entry["parameters"] = nlohmann::ordered_json::array();
     for (const ParameterSpec& spec : info.parameters) {
       nlohmann::ordered_json p;

@@ -73,6 +73,25 @@ def test_reconstruct_runs_the_program_and_checks_its_parameters(run, tmp_path, d
     assert entry["outputs"] == ["curve"] and entry["parameters"][0]["default"] == 4
 
 
+def test_a_program_declared_for_collinear_input_is_given_a_line(run, tmp_path, declarations):
+    points = tmp_path / "line.xy"
+    points.write_text("".join(f"{0.5 * i} {1 + 0.25 * i}\n" for i in range(10)))
+    path = declarations.parent / "chains.json"  # beside the scripts ({dir})
+    on_lines = {**NN_CHAIN, "name": "nn-chain-on-lines", "collinear_input": "reconstructed"}
+    path.write_text(json.dumps([NN_CHAIN, on_lines]))
+    refused = run("reconstruct", "--external", path, "--algorithm", "nn-chain", "--input", points)
+    assert refused.returncode != 0
+    assert "nn-chain: all 10 distinct points are collinear" in refused.stderr
+    out = tmp_path / "r.json"
+    given = run("reconstruct", "--external", path, "--algorithm", "nn-chain-on-lines", "--input", points, "--output", out)
+    assert given.returncode == 0, given.stderr
+    edges = json.loads(out.read_text())["curve"]["edges"]
+    assert sorted(map(sorted, edges)) == sorted([[i, i + 1] for i in range(9)] + [[0, 9]])  # the chain, closed
+    catalogue = {e["name"]: e["collinear_input"] for e in json.loads(run("list", "--json", "--external", path).stdout)}
+    assert catalogue["nn-chain"] == "refused" and catalogue["nn-chain-on-lines"] == "reconstructed"
+    assert catalogue["crawl"] == "reconstructed" and catalogue["labeling"] == "refused"
+
+
 @pytest.mark.parametrize("output_format", ["edges", "reconstruction-json"])
 def test_a_program_with_vertices_of_its_own_writes_them_in_either_format(run, tmp_path, declarations, output_format):
     points, truth, out, metrics = (tmp_path / name for name in ("rose.xy", "rose.truth.json", "r.json", "m.json"))
@@ -98,6 +117,7 @@ def test_a_program_with_vertices_of_its_own_writes_them_in_either_format(run, tm
     ({**NN_CHAIN, "outputs": ["curve", "medial_axis"]}, "the edges format holds only a curve"),
     ({**NN_CHAIN, "outputs": ["new_curve"]}, "{vertices} is for, and needed by, a \"new_curve\" in the edges format"),
     ({**NN_CHAIN, "name": "labeling"}, "two algorithms are named 'labeling'"),
+    ({**NN_CHAIN, "collinear_input": "yes"}, "collinear_input must be \"refused\" or \"reconstructed\""),
     ({**NN_CHAIN, "parameters": [{"name": "neighbours", "type": "integer", "default": 0, "minimum": 1,
                                   "description": "d"}]}, "the default 0 is not a whole number >= 1"),
 ])

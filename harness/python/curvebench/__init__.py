@@ -53,8 +53,8 @@ class GeneratedInput(NamedTuple):
 
 def algorithms() -> list[dict[str, Any]]:
     """The catalogue, as `curvebench list --json` prints it: for each algorithm its name,
-    citation, outputs and typed parameters (name, type, default, range or choices, allowed,
-    description)."""
+    citation, outputs, collinear_input and typed parameters (name, type, default, range or
+    choices, allowed, description)."""
     return json.loads(_curvebench.catalogue_json())
 
 

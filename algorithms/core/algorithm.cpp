@@ -123,16 +123,14 @@ Reconstruction Algorithm::reconstruct(std::span<const Point2> points,
   if (about.input == SiteInput::kDelaunay) {
     const DelaunayVoronoi dv = triangulate(points, about.name);
     timer.lap("delaunay");
-    const bool collinear = dv.dimension < 2;
-    require_sites(dv.site_count(), collinear, about);
-    SiteResult site_result = run(Sites{dv.sites, &dv, collinear}, parameters, timer);
+    require_sites(dv.site_count(), dv.dimension < 2, about);
+    SiteResult site_result = run(Sites{dv.sites, &dv}, parameters, timer);
     result = to_input(std::move(site_result), dv.input_of_site, dv.site_of_input, about);
   } else {
     DistinctPoints distinct = distinct_points(points);
     timer.lap("distinct_points");
-    const bool collinear = all_collinear(distinct.points);
-    require_sites(static_cast<int>(distinct.points.size()), collinear, about);
-    SiteResult site_result = run(Sites{distinct.points, nullptr, collinear}, parameters, timer);
+    require_sites(static_cast<int>(distinct.points.size()), all_collinear(distinct.points), about);
+    SiteResult site_result = run(Sites{distinct.points, nullptr}, parameters, timer);
     result = to_input(std::move(site_result), distinct.input_of_point, distinct.point_of_input, about);
   }
   result.timing_ms = timer.finish();

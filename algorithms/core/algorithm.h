@@ -66,7 +66,6 @@ struct AlgorithmInfo {
 struct Sites {
   std::span<const Point2> points;
   const DelaunayVoronoi* delaunay = nullptr;  // set when the algorithm asked for SiteInput::kDelaunay
-  bool collinear = false;                     // all on one line (CollinearInput::kReconstructed only)
 };
 
 // What run() produces, over site indices; the skeleton maps it to input indices.

@@ -34,12 +34,17 @@ std::vector<Point2> blended_positions(std::span<const Point2> sites, const Fitte
       sum[i] = sites[i];
       weight[i] = 1;
     } else if (state[i] == State::Manifold) {
-      sum[i] = fits.centers[i] + fits.radii[i] * fits.normals[i];
+      // A fit on a line (its degenerate branch, spec 2.1) has the authors' fallback circle,
+      // about one input unit off the line whatever the scale; blending onto it would throw
+      // the samples that far off their curve (several units on nearly collinear input). The
+      // curve such a fit stands for is the line through the samples, which they already lie
+      // on: the sample stays, and the fit moves no neighbour.
+      sum[i] = fits.fits_on_a_line[i] ? sites[i] : fits.centers[i] + fits.radii[i] * fits.normals[i];
       weight[i] = 1;
     }
   }
   for (int i = 0; i < n; ++i) {
-    if (state[i] != State::Manifold) continue;
+    if (state[i] != State::Manifold || fits.fits_on_a_line[i]) continue;
     const Point2 c = fits.centers[i];
     const double r = fits.radii[i];
     // The arc of i's fit runs from the outermost point of A_i^0 through p_i to that of A_i^1.

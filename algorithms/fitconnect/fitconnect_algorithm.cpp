@@ -31,13 +31,8 @@ class FitConnectAlgorithm final : public Algorithm {
   SiteResult run(const Sites& sites, const ParameterValues& params, PhaseTimer& timer) const override {
     FittedNeighborhoods fits = connect_fitted_neighborhoods(sites.points, params, timer);
     SiteResult result;
-    // On a line every fit takes spec 2.1's degenerate branch, whose fallback circle lies about
-    // one input unit off the line (an absolute, scale-dependent constant); the authors' blend
-    // onto it would move the samples that far off their curve. The circle a line's fits tend
-    // to is the line itself, onto which the samples already lie, so they stay where they are.
-    result.moved_points = params.boolean("blend") && !sites.collinear
-                              ? blended_positions(sites.points, fits)
-                              : std::vector<Point2>(sites.points.begin(), sites.points.end());
+    result.moved_points = params.boolean("blend") ? blended_positions(sites.points, fits)
+                                                  : std::vector<Point2>(sites.points.begin(), sites.points.end());
     result.curve_edges = std::move(fits.edges);
     timer.lap("blend");
     return result;

@@ -179,6 +179,7 @@ FittedNeighborhoods unfitted(int n, State state) {
   fits.centers.assign(n, {});
   fits.radii.assign(n, 0.0);
   fits.normals.assign(n, {});
+  fits.fits_on_a_line.assign(n, 0);
   fits.residuals.assign(n, 0.0);
   return fits;
 }
@@ -187,6 +188,7 @@ struct SavedFit {
   Point2 center, normal;
   double radius = 0.0;
   int side0_size = 0;
+  std::uint8_t on_a_line = 0;
 };
 
 class FitConnect {
@@ -395,6 +397,7 @@ class FitConnect {
     const FittedCircle circle = hyper_circle_fit(fit_points_);
     out_.centers[i] = circle.center;
     out_.radii[i] = circle.radius;
+    out_.fits_on_a_line[i] = circle.on_a_line;
     // The normal by std::hypot: StretchDenoise moves vertices along it, bit for bit as before.
     const Point2 radial = p_[i] - circle.center;
     out_.normals[i] = (1.0 / norm(radial)) * radial;
@@ -436,10 +439,11 @@ class FitConnect {
 
   SavedFit save_fit(int i) {
     saved_neighborhood_.assign(sides_.list(i).begin(), sides_.list(i).end());
-    return {out_.centers[i], out_.normals[i], out_.radii[i], out_.side0_sizes[i]};
+    return {out_.centers[i], out_.normals[i], out_.radii[i], out_.side0_sizes[i], out_.fits_on_a_line[i]};
   }
   void restore_fit(int i, const SavedFit& saved) {
     out_.centers[i] = saved.center;
+    out_.fits_on_a_line[i] = saved.on_a_line;
     out_.normals[i] = saved.normal;
     out_.radii[i] = saved.radius;
     sides_.assign(i, saved_neighborhood_);

@@ -9,7 +9,8 @@
 // Out: the edges: every link between two MANIFOLD / LEAF / SHARP sites once, make_edge order,
 //      sorted (spec 2.7); and per site its final state, its two link slots, its neighbourhood
 //      split into the two sides ordered outwards along its last stored circle fit, that fit
-//      (centre, radius, normal = unit(p - centre)) and the fit's largest radial residual over
+//      (centre, radius, normal = unit(p - centre), whether it took the degenerate branch of
+//      collinear neighbours) and the fit's largest radial residual over
 //      the site and its neighbours (StretchDenoise's noise estimate). A site whose last growth
 //      was undone (spec 2.6 steps 2 and 7) keeps the fit and sides from before it.
 //
@@ -52,6 +53,7 @@ struct FittedNeighborhoods {
   std::vector<Point2> centers;
   std::vector<double> radii;
   std::vector<Point2> normals;    // unit(p_i - c_i), not oriented along the curve
+  std::vector<std::uint8_t> fits_on_a_line;  // 1: the fit's degenerate branch (FittedCircle::on_a_line)
   std::vector<double> residuals;  // max over i and its neighbours q of | |p_q - c_i| - r_i |
 
   // A_i^t (t = 0, 1), ordered outwards from site i along its fit.

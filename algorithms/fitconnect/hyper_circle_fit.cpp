@@ -55,7 +55,8 @@ FittedCircle hyper_circle_fit(std::span<const Point2> points) {
 
   const double det = eta * eta - eta * m_z + cov_xy;
   double u, v;
-  if (det < 1e-20) {
+  const bool on_a_line = det < 1e-20;
+  if (on_a_line) {
     // Near-collinear: the authors' absolute threshold and fallback centre, kept for fidelity
     // (spec section 3); it is scale dependent.
     u = (points[1].y - points[0].y) / std::sqrt(z_last);
@@ -64,7 +65,7 @@ FittedCircle hyper_circle_fit(std::span<const Point2> points) {
     u = (m_xz * (m_yy - eta) - m_yz * m_xy) / det / 2.0;
     v = (m_yz * (m_xx - eta) - m_xz * m_xy) / det / 2.0;
   }
-  return {{u + mean_x, v + mean_y}, std::sqrt(u * u + v * v + m_z - eta - eta)};
+  return {{u + mean_x, v + mean_y}, std::sqrt(u * u + v * v + m_z - eta - eta), on_a_line};
 }
 
 }  // namespace curvebench

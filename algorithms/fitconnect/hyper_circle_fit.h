@@ -10,6 +10,8 @@
 //      falls below the absolute 1e-20 of the authors' code, the centre is set off the
 //      centroid by the unit normal of points 0 -> 1 scaled by 1/sqrt(z) of the last point,
 //      as they do; the radius may then be NaN, which FitConnect reads as "not conforming".
+//      `on_a_line` says so: the points are (nearly) collinear, and that circle stands for the
+//      line only as far as FitConnect's decisions go, not as a curve to move points onto.
 #pragma once
 
 #include <span>
@@ -21,6 +23,7 @@ namespace curvebench {
 struct FittedCircle {
   Point2 center;
   double radius = 0.0;
+  bool on_a_line = false;  // the degenerate branch: the centre and radius are the fallback
 };
 
 FittedCircle hyper_circle_fit(std::span<const Point2> points);

@@ -61,6 +61,31 @@ TEST(FitConnect, HyperFitOfCollinearPointsTakesTheDegenerateBranch) {
   const FittedCircle circle = hyper_circle_fit(points);
   EXPECT_DOUBLE_EQ(circle.center.x, 1.0);
   EXPECT_DOUBLE_EQ(circle.center.y, -1.0);  // (1,0) + (0, -(1 - 0)) / sqrt(1)
+  EXPECT_TRUE(circle.on_a_line);
+  EXPECT_FALSE(hyper_circle_fit(std::vector<Point2>{{0, 0}, {1, 0.1}, {2, 0}}).on_a_line);
+}
+
+TEST(FitConnect, TheBlendLeavesSamplesWhoseFitIsALineWhereTheyAre) {
+  // Every side of the square holds samples whose neighbourhoods lie on it: their fits take
+  // the degenerate branch, and blending onto its fallback circle (about a unit off the side)
+  // would move them off the square.
+  std::vector<Point2> square;
+  for (int side = 0; side < 4; ++side) {
+    for (int k = 0; k < 25; ++k) {
+      const double t = -1.0 + 0.08 * k;
+      const Point2 along[4] = {{t, -1.0}, {1.0, t}, {-t, 1.0}, {-1.0, -t}};
+      square.push_back(along[side]);
+    }
+  }
+  const FittedNeighborhoods fits = connect_fitted_neighborhoods(square);
+  const std::vector<Point2> moved = blended_positions(square, fits);
+  int on_lines = 0;
+  for (std::size_t i = 0; i < square.size(); ++i) {
+    if (fits.states[i] != SampleState::Manifold || !fits.fits_on_a_line[i]) continue;
+    ++on_lines;
+    EXPECT_EQ(moved[i], square[i]) << i;
+  }
+  EXPECT_GT(on_lines, 40);
 }
 
 TEST(FitConnect, FewerThanThreePointsGiveNoEdgesAndUnmovedPositions) {

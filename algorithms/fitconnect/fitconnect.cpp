@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 #include <utility>
 #include <vector>
@@ -18,6 +20,38 @@ constexpr int kNone = -1;
 // Polar angle of v in degrees, in [0, 360] (spec 2.8 measures arcs this way).
 double degrees(Point2 v) { return (std::atan2(v.y, v.x) + std::numbers::pi) / std::numbers::pi * 180.0; }
 
+// Whether site i and its neighbourhood lie on one line up to the rounding of their
+// coordinates: their distances from the total-least-squares line through them are all within
+// 256 units in the last place of their largest coordinate. A circle fitted to such points is
+// decided by rounding alone (spec 2.1's determinant is then a difference of rounding errors:
+// radii of hundreds of spacings that miss their own points by whole spacings), whether or not
+// the fit took its degenerate branch.
+bool collinear_up_to_rounding(std::span<const Point2> sites, const FittedNeighborhoods& fits, int i) {
+  const std::vector<int>& around = fits.neighborhoods[i];
+  Point2 mean = sites[i];
+  double largest = std::max(std::fabs(sites[i].x), std::fabs(sites[i].y));
+  for (int q : around) {
+    mean = mean + sites[q];
+    largest = std::max({largest, std::fabs(sites[q].x), std::fabs(sites[q].y)});
+  }
+  mean = (1.0 / static_cast<double>(around.size() + 1)) * mean;
+  double xx = 0.0, yy = 0.0, xy = 0.0;
+  auto scatter = [&](Point2 p) {
+    const Point2 d = p - mean;
+    xx += d.x * d.x;
+    yy += d.y * d.y;
+    xy += d.x * d.y;
+  };
+  scatter(sites[i]);
+  for (int q : around) scatter(sites[q]);
+  // The line's normal: the eigenvector of the scatter matrix's smaller eigenvalue.
+  const double angle = 0.5 * std::atan2(2.0 * xy, xx - yy);
+  const Point2 normal{-std::sin(angle), std::cos(angle)};
+  const double tolerance = 256.0 * std::numeric_limits<double>::epsilon() * largest;
+  auto on_the_line = [&](Point2 p) { return std::fabs(dot(p - mean, normal)) <= tolerance; };
+  return on_the_line(sites[i]) && std::all_of(around.begin(), around.end(), [&](int q) { return on_the_line(sites[q]); });
+}
+
 }  // namespace
 
 std::vector<Point2> blended_positions(std::span<const Point2> sites, const FittedNeighborhoods& fits) {
@@ -27,6 +61,12 @@ std::vector<Point2> blended_positions(std::span<const Point2> sites, const Fitte
     auto sharp = [&](int q) { return q != kNone && state[q] == State::Sharp; };  // state[-1] is no state
     return sharp(i) || sharp(fits.links[i][0]) || sharp(fits.links[i][1]);
   };
+  // A fit on a line: its degenerate branch (an absolute threshold), or points collinear up to
+  // rounding (a relative one, spec 3).
+  std::vector<std::uint8_t> on_a_line(n, 0);
+  for (int i = 0; i < n; ++i) {
+    on_a_line[i] = state[i] == State::Manifold && (fits.fits_on_a_line[i] || collinear_up_to_rounding(sites, fits, i));
+  }
   std::vector<Point2> sum(n);
   std::vector<int> weight(n, 0);
   for (int i = 0; i < n; ++i) {
@@ -34,17 +74,17 @@ std::vector<Point2> blended_positions(std::span<const Point2> sites, const Fitte
       sum[i] = sites[i];
       weight[i] = 1;
     } else if (state[i] == State::Manifold) {
-      // A fit on a line (its degenerate branch, spec 2.1) has the authors' fallback circle,
-      // about one input unit off the line whatever the scale; blending onto it would throw
-      // the samples that far off their curve (several units on nearly collinear input). The
-      // curve such a fit stands for is the line through the samples, which they already lie
-      // on: the sample stays, and the fit moves no neighbour.
-      sum[i] = fits.fits_on_a_line[i] ? sites[i] : fits.centers[i] + fits.radii[i] * fits.normals[i];
+      // A fit on a line has no circle to blend onto: the degenerate branch's fallback lies
+      // about one input unit off the line whatever the scale, and a fit of points collinear
+      // up to rounding is a circle made of rounding errors; either would throw the samples
+      // whole units off their curve. The curve such a fit stands for is the line through the
+      // samples, which they already lie on: the sample stays, and the fit moves no neighbour.
+      sum[i] = on_a_line[i] ? sites[i] : fits.centers[i] + fits.radii[i] * fits.normals[i];
       weight[i] = 1;
     }
   }
   for (int i = 0; i < n; ++i) {
-    if (state[i] != State::Manifold || fits.fits_on_a_line[i]) continue;
+    if (state[i] != State::Manifold || on_a_line[i]) continue;
     const Point2 c = fits.centers[i];
     const double r = fits.radii[i];
     // The arc of i's fit runs from the outermost point of A_i^0 through p_i to that of A_i^1.

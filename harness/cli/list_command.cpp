@@ -28,6 +28,7 @@ void add_list_command(CLI::App& app) {
         produces += (produces.empty() ? "" : ", ") + output;
       }
       std::cout << info.name << "\n  " << info.citation << "\n  produces: " << produces << "\n";
+      if (info.collinear == CollinearInput::kReconstructed) std::cout << "  takes collinear input\n";
       for (const auto& p : info.parameters) {
         std::cout << "  --param " << p.name << "=" << value_text(p.default_value) << "  (" << type_name(p.type) << ": "
                   << allowed_values(p) << ") " << p.description << "\n";

@@ -30,6 +30,12 @@ def test_list_names_every_algorithm_and_its_outputs(run):
     assert result.returncode == 0
     assert "labeling" in result.stdout
     assert "produces: curve, medial axis, dominant points" in result.stdout
+    entries, name = {}, None  # the indented lines under each algorithm's name
+    for line in result.stdout.splitlines():
+        if not line.startswith(" "):
+            name = line
+        entries.setdefault(name, []).append(line.strip())
+    assert "takes collinear input" in entries["crawl"] and "takes collinear input" not in entries["labeling"]
 
 
 def test_reconstruct_writes_json_and_svg(run, tmp_path):

@@ -19,7 +19,9 @@ namespace curvebench {
 //      position; every other one moves to the average of its projection onto its own circle
 //      (if MANIFOLD) and the hits of its normal line on the circles of the MANIFOLD samples
 //      whose sides hold it, each inside that sample's arc and on its side of it; a sample
-//      with no such contribution keeps its position.
+//      with no such contribution keeps its position. A MANIFOLD sample whose fit is a line
+//      (the fit's degenerate branch, or its neighbourhood collinear up to rounding) has no
+//      circle: it contributes its own position and moves no neighbour (README.md).
 std::vector<Point2> blended_positions(std::span<const Point2> sites, const FittedNeighborhoods& fits);
 
 // In:  distinct finite sites; `blend`: the authors' default mode (true) or mode *none*;

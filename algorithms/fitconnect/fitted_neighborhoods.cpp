@@ -443,9 +443,9 @@ class FitConnect {
   }
   void restore_fit(int i, const SavedFit& saved) {
     out_.centers[i] = saved.center;
-    out_.fits_on_a_line[i] = saved.on_a_line;
     out_.normals[i] = saved.normal;
     out_.radii[i] = saved.radius;
+    out_.fits_on_a_line[i] = saved.on_a_line;
     sides_.assign(i, saved_neighborhood_);
     out_.side0_sizes[i] = saved.side0_size;
   }

@@ -97,8 +97,7 @@ Eigen::VectorXd bounded_least_squares(const std::vector<Eigen::Triplet<double>>&
       Eigen::VectorXd target = -factor.solve(pull_free);
       if (constrained) {
         const Eigen::VectorXd z = factor.solve(c_free);
-        double b_free = b;
-        for (int j = 0; j < k; ++j) b_free -= place[j] == Place::kFree ? 0.0 : c[j] * x[j];
+        const double b_free = b - c.dot(held);
         multiplier = (b_free - c_free.dot(target)) / c_free.dot(z);
         target += multiplier * z;
       }

@@ -134,10 +134,8 @@ TEST(DegenerateInputs, CollinearSamplesAreAnOpenCurveToTheMethodsThatDefineOne) 
   std::vector<int> order(15);
   std::iota(order.begin(), order.end(), 0);
   std::shuffle(order.begin(), order.end(), std::mt19937(5));
-  std::vector<Point2> line;  // sample order[k] is the k-th along the line
-  std::vector<int> rank_of(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k) rank_of[order[k]] = static_cast<int>(k);
-  for (int index = 0; index < static_cast<int>(order.size()); ++index) line.push_back({3.0 - 0.5 * rank_of[index], 1.0 + 0.25 * rank_of[index]});
+  std::vector<Point2> line(order.size());  // sample order[k] is the k-th along the line
+  for (std::size_t k = 0; k < order.size(); ++k) line[order[k]] = {3.0 - 0.5 * k, 1.0 + 0.25 * k};
   std::vector<Edge> path;
   for (std::size_t k = 1; k < order.size(); ++k) path.push_back(make_edge(order[k - 1], order[k]));
   std::sort(path.begin(), path.end());

@@ -261,9 +261,19 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   // Step 11 (shape_hull_through_every_sample.h) where the labels end with a fault and hold one
   // curve, or where step 8 split their one curve.
   auto take_the_shape_hull_where_one_curve_is_wrong = [&](const std::vector<int>& curve_edges) {
-    if (pockets_split_one_curve || (!every_sample_has_two_curve_edges(dv, curve_edges) &&
-                                    curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges))) {
-      take_the_shape_hull_through_every_sample(dv, labels.inner);
+    if (pockets_split_one_curve) {
+      take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, labels.inner, curve_edges);
+    } else if (!every_sample_has_two_curve_edges(dv, curve_edges) &&
+               curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges)) {
+      // Where the only faults are pinches (every sample an even number of curve edges), the
+      // labels' curve is a closed tour through every sample that touches itself: as in step
+      // 12, shape-hull's tour replaces it only if shorter.
+      auto on_a_tour = [](int edges) { return edges >= 2 && edges % 2 == 0; };
+      if (std::all_of(curve_edges.begin(), curve_edges.end(), on_a_tour)) {
+        take_the_shape_hull_where_it_is_shorter(dv, labels.inner);
+      } else {
+        take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, labels.inner, curve_edges);
+      }
     }
   };
   // The loop stops with evidence left only where no part was taken: those samples' cells lie

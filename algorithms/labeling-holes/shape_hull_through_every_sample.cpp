@@ -1,12 +1,34 @@
 #include "labeling-holes/shape_hull_through_every_sample.h"
 
+#include <algorithm>
+#include <array>
 #include <numeric>
 #include <utility>
 
+#include "core/point.h"
 #include "labeling-holes/curve_edges_per_sample.h"
 #include "shape-hull/shape_hull_triangles.h"
 
 namespace curvebench {
+namespace {
+
+// Whether shape-hull's path a-s-b, for a sample s it brings onto the curve alone, is a spike
+// over a curve edge a-b of `inner`: both legs longer than the edge they replace (the angle at
+// s below 60 degrees). A sample of the curve that the labels' edge a-b skipped lies nearer a
+// or b than they lie to each other unless the curve turns by more than 120 degrees at it; an
+// outlier beside the curve lies farther from both. Such a tip is refused with the outliers:
+// the labels stay, as before this test.
+bool is_a_spike_over_a_curve_edge(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, int s,
+                                  const std::array<int, 2>& ends) {
+  const int a = ends[0], b = ends[1];
+  bool a_to_b = false;
+  for_each_curve_edge_at(dv, inner, a, [&](int end, int, int) { a_to_b = a_to_b || end == b; });
+  if (!a_to_b) return false;
+  const double base = squared_distance(dv.sites[a], dv.sites[b]);
+  return squared_distance(dv.sites[s], dv.sites[a]) > base && squared_distance(dv.sites[s], dv.sites[b]) > base;
+}
+
+}  // namespace
 
 bool curve_edges_form_one_connected_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                           const std::vector<int>& curve_edges) {
@@ -30,6 +52,39 @@ bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::ve
   if (dv.dimension != 2) return false;
   std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
   if (!every_sample_has_two_curve_edges(dv, curve_edges_per_sample(dv, shape))) return false;
+  inner = std::move(shape);
+  return true;
+}
+
+bool take_the_shape_hull_where_it_puts_more_samples_on_the_curve(const DelaunayVoronoi& dv,
+                                                                  std::vector<std::uint8_t>& inner,
+                                                                  const std::vector<int>& curve_edges) {
+  if (dv.dimension != 2) return false;
+  std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
+  const std::vector<int> shape_edges = curve_edges_per_sample(dv, shape);
+  int off_the_labels = 0, off_both = 0;
+  for (int s = 0; s < dv.site_count(); ++s) {
+    if (dv.site_triangle[s] < 0) continue;
+    off_the_labels += curve_edges[s] != 2;
+    if (shape_edges[s] == 2) continue;
+    if (shape_edges[s] != 0 || curve_edges[s] != 0) return false;  // a sample shape-hull takes off
+    ++off_both;
+  }
+  if (off_both >= std::max(off_the_labels, 1)) return false;
+  if (off_both > 0) {
+    // Per sample brought on from no curve edge: its two neighbours on shape-hull's curve.
+    std::vector<std::array<int, 2>> neighbours(dv.site_count(), {-1, -1});
+    for_each_curve_edge(dv, shape, [&](int a, int b) {
+      if (curve_edges[a] == 0) neighbours[a][neighbours[a][0] < 0 ? 0 : 1] = b;
+      if (curve_edges[b] == 0) neighbours[b][neighbours[b][0] < 0 ? 0 : 1] = a;
+    });
+    for (int s = 0; s < dv.site_count(); ++s) {
+      if (curve_edges[s] != 0 || shape_edges[s] != 2) continue;
+      const auto [a, b] = neighbours[s];
+      const bool alone = curve_edges[a] != 0 && curve_edges[b] != 0;  // neither brought on with it
+      if (alone && is_a_spike_over_a_curve_edge(dv, inner, s, neighbours[s])) return false;
+    }
+  }
   inner = std::move(shape);
   return true;
 }

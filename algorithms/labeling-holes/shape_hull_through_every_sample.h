@@ -1,6 +1,6 @@
 // Step 11 of labeling-holes: where the labels end with samples off the curve or on a pinch, or
-// with a curve step 8 split in two, the shape-hull of the samples instead, if its curve is a
-// 1-manifold through every sample.
+// with a curve step 8 split in two, the shape-hull of the samples instead, if its curve puts
+// more samples on a 1-manifold and takes none off.
 //
 // Every sample of a curve lies on it between its two neighbours, so labels under which a
 // sample has no curve edge, or four, are wrong there. Steps 6-10 repair the faults they can
@@ -16,12 +16,15 @@
 // It is taken only where it can be the answer and the labels cannot (the caller,
 // label_voronoi_vertices_with_holes.cpp, decides where): the labels are wrong somewhere (a
 // sample has other than two curve edges, or step 8 opened a pocket that left its samples on
-// two curves), they hold one curve (for such a pocket, the labels before step 8; shape-hull's one curve cannot represent holes, nested or
-// disjoint curves, nor the small closed curves noise leaves, so labels with several are kept:
-// this also spares noisy input the sculpting's cost), and under shape-hull's triangles every
-// sample has exactly two curve edges. Shape-hull's kept triangles then become the inner
-// vertices, so the medial axis and the dominant points follow its curve as they follow the
-// labels'.
+// two curves), they hold one curve (for such a pocket, the labels before step 8; shape-hull's
+// one curve cannot represent holes, nested or disjoint curves, nor the small closed curves
+// noise leaves, so labels with several are kept: this also spares noisy input the sculpting's
+// cost), and shape-hull's curve explains more of the samples
+// (take_the_shape_hull_where_it_puts_more_samples_on_the_curve). Where the labels' only faults
+// are pinches, their curve is a tour through every sample, and the caller compares the two
+// tours' lengths instead (shape_hull_where_it_is_shorter.h). Shape-hull's kept triangles
+// then become the inner vertices, so the medial axis and the dominant points follow its curve
+// as they follow the labels'.
 #pragma once
 
 #include <cstdint>
@@ -41,5 +44,24 @@ bool curve_edges_form_one_connected_curve(const DelaunayVoronoi& dv, const std::
 // Out: true with `inner` set to shape-hull's triangles if under them every sample has exactly
 //      two curve edges, else false with `inner` as it came.
 bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner);
+
+// In:  Delaunay/Voronoi arrays; `inner`, the labels to replace; `curve_edges`, their counts
+//      per sample (curve_edges_per_sample.h).
+// Out: true with `inner` set to shape-hull's triangles if its curve puts more samples on a
+//      1-manifold than the labels' and takes none off, else false with `inner` as it came:
+//      - under shape-hull's triangles every sample has exactly two curve edges, except samples
+//        that have none under the labels either (samples neither curve explains: outliers, or
+//        samples of a feature narrower than the sampling, a glyph's stem at 50 points);
+//      - there are fewer of those than samples with other than two curve edges under the
+//        labels (with none under the labels, shape-hull's curve passes through every sample);
+//      - where a sample is left off both, no sample that shape-hull brings onto the curve alone
+//        (from off the labels' curve, with neither curve neighbour brought on from off it too)
+//        is a spike over a curve edge of the labels: between the two ends of such an edge, and
+//        farther from each than they lie from each other. That is what an outlier beside the
+//        curve looks like, and shape-hull's spike to it would replace a curve edge the labels
+//        have right; a sample of the curve the labels skipped lies nearer one of its neighbours.
+bool take_the_shape_hull_where_it_puts_more_samples_on_the_curve(const DelaunayVoronoi& dv,
+                                                                  std::vector<std::uint8_t>& inner,
+                                                                  const std::vector<int>& curve_edges);
 
 }  // namespace curvebench

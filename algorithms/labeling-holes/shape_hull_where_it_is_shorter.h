@@ -15,7 +15,9 @@
 //
 // The caller (label_voronoi_vertices_with_holes.cpp) decides where: the labels are not the
 // paper's own (where they are, and are a 1-manifold, the paper's answer stands), no missed
-// curve was taken at step 4, and the labels are one closed curve through every sample.
+// curve was taken at step 4, and the labels are one closed curve through every sample. Step
+// 11 compares the same two tours where the labels' curve passes through every sample but
+// touches itself (pinches, and no other fault).
 #pragma once
 
 #include <cstdint>

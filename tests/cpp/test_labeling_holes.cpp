@@ -717,6 +717,124 @@ TEST(LabelingHoles, TheShapeHullIsNotTakenWhereTheLabelsHoldSeveralCurves) {
   EXPECT_TRUE(curve_edges_form_one_connected_curve(dv, shape_hull_triangles(dv), shape_hull_edges));
 }
 
+// The true curve edges among `edges`.
+int true_edges_among(const std::vector<Edge>& edges, std::vector<Edge> truth) {
+  truth = sorted(std::move(truth));
+  return static_cast<int>(std::count_if(edges.begin(), edges.end(), [&](const Edge& e) {
+    return std::binary_search(truth.begin(), truth.end(), e);
+  }));
+}
+
+TEST(LabelingHoles, TheShapeHullIsTakenWhereItPutsMoreSamplesOnTheCurveAndTakesNoneOff) {
+  // holes.json's A at 50 points, seed 2: the labels end with samples off the curve, and
+  // shape-hull's curve leaves a sample off too, so it is not a curve through every sample. But
+  // the samples it leaves off are off the labels' curve as well, it puts more of the others on
+  // a 1-manifold, and it brings them on in stretches, not as lone spikes: it is taken.
+  const SampledScene samples = glyph_sample(kGlyphA, 50, 2);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(samples.points);
+  const std::vector<int> shape_hull_edges = curve_edges_per_sample(dv, shape_hull_triangles(dv));
+  EXPECT_LT(std::count(shape_hull_edges.begin(), shape_hull_edges.end(), 2), dv.site_count());
+  const std::vector<Edge> paper = sorted(*run("labeling", samples.points).curve_edges);
+  const std::vector<Edge> extended = sorted(*run("labeling-holes", samples.points).curve_edges);
+  EXPECT_EQ(extended, sorted(*run("shape-hull", samples.points).curve_edges));
+  EXPECT_GT(true_edges_among(extended, samples.true_edges), true_edges_among(paper, samples.true_edges));
+}
+
+TEST(LabelingHoles, TheShapeHullIsNotTakenWhereItWouldJoinALoneOutlierToTheCurve) {
+  // outliers.json's dumbbell at epsilon 0.15 with 10% outliers, seed 2: the labels hold the
+  // curve exactly and leave the outliers off it. Shape-hull leaves fewer samples off, every one
+  // of them off the labels' curve too, but it reaches outliers beside the curve with spikes
+  // that replace true curve edges: the labels stay.
+  GeneratorSettings settings;
+  settings.family = "dumbbell";
+  settings.epsilon = 0.15;
+  settings.outliers = 0.1;
+  settings.dense = 4096;
+  settings.seed = 2;
+  const GeneratedInput input = generate(settings);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(input.points);
+  std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
+  const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
+  const std::vector<int> shape_hull_edges = curve_edges_per_sample(dv, shape_hull_triangles(dv));
+  int off_the_labels = 0, off_both = 0, off_shape_hull_only = 0;
+  for (int s = 0; s < dv.site_count(); ++s) {
+    off_the_labels += curve_edges[s] != 2;
+    off_both += shape_hull_edges[s] != 2 && curve_edges[s] == 0;
+    off_shape_hull_only += shape_hull_edges[s] != 2 && curve_edges[s] != 0;
+  }
+  ASSERT_GT(off_both, 0);
+  ASSERT_LT(off_both, off_the_labels);
+  ASSERT_EQ(off_shape_hull_only, 0);
+  const std::vector<std::uint8_t> paper = inner;
+  EXPECT_FALSE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, inner, curve_edges));
+  EXPECT_EQ(inner, paper);
+  EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges));
+}
+
+// DejaVu Sans's flag (U+2691, real_outlines.py --chars ⚑): a pole and a pennant, one ring.
+constexpr const char* kGlyphFlag =
+    "0.20515625 0.70515625\n0.1684375 0.70515625\n0.16796875 0.7309375\n0.29984375 0.7309375\n"
+    "0.29984375 0.70515625\n0.26265625 0.70515625\n0.26265625 0.69234375\n0.2883203125 0.6952734375\n"
+    "0.3134375 0.69625\n0.40542968749999997 0.6816015625\n0.49171875000000004 0.63765625\n0.5732421875 0.6040234375\n"
+    "0.6528125 0.5928125\n0.690546875 0.5953515625\n0.7275 0.60296875\n0.7275 0.234375\n"
+    "0.67625 0.2241796875\n0.6259375 0.22078125\n0.543984375 0.23015625\n0.465 0.25828125\n"
+    "0.39136718750000005 0.2865234375\n0.32515625 0.2959375\n0.28734375 0.292265625\n0.25203125 0.28125\n"
+    "0.25203125 0.00296875\n0.20515625 0.00296875\n";
+
+TEST(LabelingHoles, LabelsWhoseOnlyFaultIsAPinchGiveWayToTheShapeHullOnlyWhereItIsShorter) {
+  // silhouettes.json's flag at 30 samples, seed 8: the paper's curve passes through every
+  // sample and touches itself at one (four curve edges), where the pole is narrower than the
+  // sampling. Shape-hull's curve passes through every sample too, with long chords across the
+  // pennant's foot. Both are closed tours of the samples, and the paper's is the shorter: it
+  // stays (step 12's rule), where taking shape-hull's as a curve through every sample would
+  // put the extension farther from the flag than the paper.
+  const SampledScene samples = glyph_sample(kGlyphFlag, 30, 8);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(samples.points);
+  const std::vector<std::uint8_t> paper = label_voronoi_vertices(dv).inner;
+  const std::vector<int> curve_edges = curve_edges_per_sample(dv, paper);
+  EXPECT_EQ(std::count(curve_edges.begin(), curve_edges.end(), 4), 1);
+  EXPECT_EQ(std::count(curve_edges.begin(), curve_edges.end(), 2), dv.site_count() - 1);
+  std::vector<std::uint8_t> shape = paper;
+  EXPECT_TRUE(take_the_shape_hull_through_every_sample(dv, shape));
+  shape = paper;
+  EXPECT_FALSE(take_the_shape_hull_where_it_is_shorter(dv, shape));
+  EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("labeling", samples.points).curve_edges));
+}
+
+TEST(LabelingHoles, TheShapeHullIsTakenWhereTheSampleItBringsOnAloneIsNoSpike) {
+  // silhouettes.json's flag at 50 samples, seed 3: the paper's curve leaves samples off, and
+  // shape-hull's leaves one off that the labels leave off too, so the outlier guard applies.
+  // Shape-hull brings a sample onto its curve alone, between two samples of the labels' curve,
+  // but nearer one of them than they lie to each other: a sample of the flag, not an outlier's
+  // spike. Shape-hull's curve, with more samples on a 1-manifold, is taken.
+  const SampledScene samples = glyph_sample(kGlyphFlag, 50, 3);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(samples.points);
+  std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
+  const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
+  const std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
+  const std::vector<int> shape_hull_edges = curve_edges_per_sample(dv, shape);
+  int off_both = 0, off_shape_hull_only = 0;
+  for (int s = 0; s < dv.site_count(); ++s) {
+    off_both += shape_hull_edges[s] != 2 && curve_edges[s] == 0;
+    off_shape_hull_only += shape_hull_edges[s] != 2 && curve_edges[s] != 0;
+  }
+  ASSERT_GT(off_both, 0);
+  ASSERT_EQ(off_shape_hull_only, 0);
+  // The samples shape-hull brings on alone: off the labels' curve, with neither neighbour on
+  // shape-hull's curve off it too.
+  std::vector<int> brought_on_with_a_neighbour(dv.site_count(), 0);
+  for_each_curve_edge(dv, shape, [&](int a, int b) {
+    if (curve_edges[a] == 0 && curve_edges[b] == 0) brought_on_with_a_neighbour[a] = brought_on_with_a_neighbour[b] = 1;
+  });
+  int alone = 0;
+  for (int s = 0; s < dv.site_count(); ++s) alone += curve_edges[s] == 0 && shape_hull_edges[s] == 2 && !brought_on_with_a_neighbour[s];
+  ASSERT_GT(alone, 0);
+  EXPECT_TRUE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, inner, curve_edges));
+  EXPECT_EQ(inner, shape);
+  EXPECT_GT(std::count(shape_hull_edges.begin(), shape_hull_edges.end(), 2), std::count(curve_edges.begin(), curve_edges.end(), 2));
+  EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("shape-hull", samples.points).curve_edges));
+}
+
 TEST(LabelingHoles, ThePocketsOfAnSThePaperClosedOffAreOpened) {
   // holes.json's S at 400 points, seeds 3 and 5: the paper's walk stops at the mouth of one of
   // the S's pockets (an undersampled stroke end) and closes the curve across it; the walls'

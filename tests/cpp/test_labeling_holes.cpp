@@ -740,6 +740,40 @@ TEST(LabelingHoles, TheShapeHullIsTakenWhereItPutsMoreSamplesOnTheCurveAndTakesN
   EXPECT_GT(true_edges_among(extended, samples.true_edges), true_edges_among(paper, samples.true_edges));
 }
 
+TEST(LabelingHoles, TheShapeHullIsTakenWhereItLeavesAtMostHalfAsManySamplesOffAsTheLabels) {
+  // sharp_corners.json's 8-pointed star at epsilon 0.3, seed 2: the paper's walk stops at the
+  // mouth of a pocket and closes it off, and step 8's walk from the mouth leaves evidence, so
+  // the paper's labels reach step 11 with the pocket's walls off the curve. Shape-hull's curve
+  // runs down the pocket but stops short of some concave corners the labels' curve passes
+  // through: it takes samples off, and leaves far fewer off than the labels. It is taken.
+  GeneratorSettings settings;
+  settings.family = "star";
+  settings.shape = {{"points", 8}};
+  settings.epsilon = 0.3;
+  settings.dense = 4096;
+  settings.seed = 2;
+  const GeneratedInput input = generate(settings);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(input.points);
+  std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
+  const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
+  const std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
+  const std::vector<int> shape_hull_edges = curve_edges_per_sample(dv, shape);
+  int off_the_labels = 0, off_the_shape = 0, taken_off = 0;
+  for (int s = 0; s < dv.site_count(); ++s) {
+    off_the_labels += curve_edges[s] != 2;
+    off_the_shape += shape_hull_edges[s] != 2;
+    taken_off += shape_hull_edges[s] != 2 && curve_edges[s] == 2;
+  }
+  ASSERT_GT(taken_off, 0);
+  ASSERT_LE(2 * off_the_shape, off_the_labels);
+  EXPECT_TRUE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, inner, curve_edges));
+  EXPECT_EQ(inner, shape);
+  const std::vector<Edge> extended = sorted(*run("labeling-holes", input.points).curve_edges);
+  EXPECT_EQ(extended, sorted(*run("shape-hull", input.points).curve_edges));
+  EXPECT_GT(true_edges_among(extended, input.truth.edges),
+            true_edges_among(sorted(*run("labeling", input.points).curve_edges), input.truth.edges) + 100);
+}
+
 TEST(LabelingHoles, TheShapeHullIsNotTakenWhereItWouldJoinALoneOutlierToTheCurve) {
   // outliers.json's dumbbell at epsilon 0.15 with 10% outliers, seed 2: the labels hold the
   // curve exactly and leave the outliers off it. Shape-hull leaves fewer samples off, every one
@@ -780,6 +814,31 @@ constexpr const char* kGlyphFlag =
     "0.67625 0.2241796875\n0.6259375 0.22078125\n0.543984375 0.23015625\n0.465 0.25828125\n"
     "0.39136718750000005 0.2865234375\n0.32515625 0.2959375\n0.28734375 0.292265625\n0.25203125 0.28125\n"
     "0.25203125 0.00296875\n0.20515625 0.00296875\n";
+
+TEST(LabelingHoles, TheShapeHullIsNotTakenWhereItTakesSamplesOffAndLeavesMoreThanHalfAsManyOff) {
+  // The flag at 50 samples, seed 11: the paper's labels end with four samples off the curve
+  // and evidence that no step explains. Shape-hull's curve leaves three off, one of them a
+  // sample the labels' curve passes through: one fewer is no majority of what the labels
+  // cannot explain, and the labels stay.
+  const SampledScene samples = glyph_sample(kGlyphFlag, 50, 11);
+  const DelaunayVoronoi dv = build_delaunay_voronoi(samples.points);
+  std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
+  const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
+  const std::vector<int> shape_hull_edges = curve_edges_per_sample(dv, shape_hull_triangles(dv));
+  int off_the_labels = 0, off_the_shape = 0, taken_off = 0;
+  for (int s = 0; s < dv.site_count(); ++s) {
+    off_the_labels += curve_edges[s] != 2;
+    off_the_shape += shape_hull_edges[s] != 2;
+    taken_off += shape_hull_edges[s] != 2 && curve_edges[s] == 2;
+  }
+  ASSERT_EQ(off_the_labels, 4);
+  ASSERT_EQ(off_the_shape, 3);
+  ASSERT_EQ(taken_off, 1);
+  const std::vector<std::uint8_t> paper = inner;
+  EXPECT_FALSE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, inner, curve_edges));
+  EXPECT_EQ(inner, paper);
+  EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("labeling", samples.points).curve_edges));
+}
 
 TEST(LabelingHoles, LabelsWhoseOnlyFaultIsAPinchGiveWayToTheShapeHullOnlyWhereItIsShorter) {
   // silhouettes.json's flag at 30 samples, seed 8: the paper's curve passes through every

@@ -725,6 +725,42 @@ int true_edges_among(const std::vector<Edge>& edges, std::vector<Edge> truth) {
   }));
 }
 
+// The paper's labels and shape-hull's triangles on the same samples, with what step 11 weighs:
+// samples off a 1-manifold under each, off both (no curve edge under the labels), and taken off
+// by shape-hull (with curve edges under the labels).
+struct PaperAndShapeHull {
+  DelaunayVoronoi dv;
+  std::vector<std::uint8_t> inner, shape;
+  std::vector<int> curve_edges, shape_hull_edges;
+  int off_the_labels = 0, off_the_shape = 0, off_both = 0, taken_off = 0;
+};
+
+PaperAndShapeHull paper_and_shape_hull(const std::vector<Point2>& points) {
+  PaperAndShapeHull both{build_delaunay_voronoi(points)};
+  both.inner = label_voronoi_vertices(both.dv).inner;
+  both.shape = shape_hull_triangles(both.dv);
+  both.curve_edges = curve_edges_per_sample(both.dv, both.inner);
+  both.shape_hull_edges = curve_edges_per_sample(both.dv, both.shape);
+  for (int s = 0; s < both.dv.site_count(); ++s) {
+    both.off_the_labels += both.curve_edges[s] != 2;
+    if (both.shape_hull_edges[s] == 2) continue;
+    ++both.off_the_shape;
+    (both.curve_edges[s] == 0 ? both.off_both : both.taken_off) += 1;
+  }
+  return both;
+}
+
+GeneratedInput generated(const std::string& family, ShapeValues shape, double epsilon, double outliers, std::uint64_t seed) {
+  GeneratorSettings settings;
+  settings.family = family;
+  settings.shape = std::move(shape);
+  settings.epsilon = epsilon;
+  settings.outliers = outliers;
+  settings.dense = 4096;
+  settings.seed = seed;
+  return generate(settings);
+}
+
 TEST(LabelingHoles, TheShapeHullIsTakenWhereItPutsMoreSamplesOnTheCurveAndTakesNoneOff) {
   // holes.json's A at 50 points, seed 2: the labels end with samples off the curve, and
   // shape-hull's curve leaves a sample off too, so it is not a curve through every sample. But
@@ -746,28 +782,12 @@ TEST(LabelingHoles, TheShapeHullIsTakenWhereItLeavesAtMostHalfAsManySamplesOffAs
   // the paper's labels reach step 11 with the pocket's walls off the curve. Shape-hull's curve
   // runs down the pocket but stops short of some concave corners the labels' curve passes
   // through: it takes samples off, and leaves far fewer off than the labels. It is taken.
-  GeneratorSettings settings;
-  settings.family = "star";
-  settings.shape = {{"points", 8}};
-  settings.epsilon = 0.3;
-  settings.dense = 4096;
-  settings.seed = 2;
-  const GeneratedInput input = generate(settings);
-  const DelaunayVoronoi dv = build_delaunay_voronoi(input.points);
-  std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
-  const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
-  const std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
-  const std::vector<int> shape_hull_edges = curve_edges_per_sample(dv, shape);
-  int off_the_labels = 0, off_the_shape = 0, taken_off = 0;
-  for (int s = 0; s < dv.site_count(); ++s) {
-    off_the_labels += curve_edges[s] != 2;
-    off_the_shape += shape_hull_edges[s] != 2;
-    taken_off += shape_hull_edges[s] != 2 && curve_edges[s] == 2;
-  }
-  ASSERT_GT(taken_off, 0);
-  ASSERT_LE(2 * off_the_shape, off_the_labels);
-  EXPECT_TRUE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, inner, curve_edges));
-  EXPECT_EQ(inner, shape);
+  const GeneratedInput input = generated("star", {{"points", 8}}, 0.3, 0, 2);
+  PaperAndShapeHull both = paper_and_shape_hull(input.points);
+  ASSERT_GT(both.taken_off, 0);
+  ASSERT_LE(2 * both.off_the_shape, both.off_the_labels);
+  EXPECT_TRUE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(both.dv, both.inner, both.curve_edges));
+  EXPECT_EQ(both.inner, both.shape);
   const std::vector<Edge> extended = sorted(*run("labeling-holes", input.points).curve_edges);
   EXPECT_EQ(extended, sorted(*run("shape-hull", input.points).curve_edges));
   EXPECT_GT(true_edges_among(extended, input.truth.edges),
@@ -779,29 +799,14 @@ TEST(LabelingHoles, TheShapeHullIsNotTakenWhereItWouldJoinALoneOutlierToTheCurve
   // curve exactly and leave the outliers off it. Shape-hull leaves fewer samples off, every one
   // of them off the labels' curve too, but it reaches outliers beside the curve with spikes
   // that replace true curve edges: the labels stay.
-  GeneratorSettings settings;
-  settings.family = "dumbbell";
-  settings.epsilon = 0.15;
-  settings.outliers = 0.1;
-  settings.dense = 4096;
-  settings.seed = 2;
-  const GeneratedInput input = generate(settings);
-  const DelaunayVoronoi dv = build_delaunay_voronoi(input.points);
-  std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
-  const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
-  const std::vector<int> shape_hull_edges = curve_edges_per_sample(dv, shape_hull_triangles(dv));
-  int off_the_labels = 0, off_both = 0, off_shape_hull_only = 0;
-  for (int s = 0; s < dv.site_count(); ++s) {
-    off_the_labels += curve_edges[s] != 2;
-    off_both += shape_hull_edges[s] != 2 && curve_edges[s] == 0;
-    off_shape_hull_only += shape_hull_edges[s] != 2 && curve_edges[s] != 0;
-  }
-  ASSERT_GT(off_both, 0);
-  ASSERT_LT(off_both, off_the_labels);
-  ASSERT_EQ(off_shape_hull_only, 0);
-  const std::vector<std::uint8_t> paper = inner;
-  EXPECT_FALSE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, inner, curve_edges));
-  EXPECT_EQ(inner, paper);
+  const GeneratedInput input = generated("dumbbell", {}, 0.15, 0.1, 2);
+  PaperAndShapeHull both = paper_and_shape_hull(input.points);
+  ASSERT_GT(both.off_both, 0);
+  ASSERT_LT(both.off_both, both.off_the_labels);
+  ASSERT_EQ(both.taken_off, 0);
+  const std::vector<std::uint8_t> paper = both.inner;
+  EXPECT_FALSE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(both.dv, both.inner, both.curve_edges));
+  EXPECT_EQ(both.inner, paper);
   EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges));
 }
 
@@ -821,22 +826,13 @@ TEST(LabelingHoles, TheShapeHullIsNotTakenWhereItTakesSamplesOffAndLeavesMoreTha
   // sample the labels' curve passes through: one fewer is no majority of what the labels
   // cannot explain, and the labels stay.
   const SampledScene samples = glyph_sample(kGlyphFlag, 50, 11);
-  const DelaunayVoronoi dv = build_delaunay_voronoi(samples.points);
-  std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
-  const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
-  const std::vector<int> shape_hull_edges = curve_edges_per_sample(dv, shape_hull_triangles(dv));
-  int off_the_labels = 0, off_the_shape = 0, taken_off = 0;
-  for (int s = 0; s < dv.site_count(); ++s) {
-    off_the_labels += curve_edges[s] != 2;
-    off_the_shape += shape_hull_edges[s] != 2;
-    taken_off += shape_hull_edges[s] != 2 && curve_edges[s] == 2;
-  }
-  ASSERT_EQ(off_the_labels, 4);
-  ASSERT_EQ(off_the_shape, 3);
-  ASSERT_EQ(taken_off, 1);
-  const std::vector<std::uint8_t> paper = inner;
-  EXPECT_FALSE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, inner, curve_edges));
-  EXPECT_EQ(inner, paper);
+  PaperAndShapeHull both = paper_and_shape_hull(samples.points);
+  ASSERT_EQ(both.off_the_labels, 4);
+  ASSERT_EQ(both.off_the_shape, 3);
+  ASSERT_EQ(both.taken_off, 1);
+  const std::vector<std::uint8_t> paper = both.inner;
+  EXPECT_FALSE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(both.dv, both.inner, both.curve_edges));
+  EXPECT_EQ(both.inner, paper);
   EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("labeling", samples.points).curve_edges));
 }
 
@@ -867,29 +863,23 @@ TEST(LabelingHoles, TheShapeHullIsTakenWhereTheSampleItBringsOnAloneIsNoSpike) {
   // but nearer one of them than they lie to each other: a sample of the flag, not an outlier's
   // spike. Shape-hull's curve, with more samples on a 1-manifold, is taken.
   const SampledScene samples = glyph_sample(kGlyphFlag, 50, 3);
-  const DelaunayVoronoi dv = build_delaunay_voronoi(samples.points);
-  std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
-  const std::vector<int> curve_edges = curve_edges_per_sample(dv, inner);
-  const std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
-  const std::vector<int> shape_hull_edges = curve_edges_per_sample(dv, shape);
-  int off_both = 0, off_shape_hull_only = 0;
-  for (int s = 0; s < dv.site_count(); ++s) {
-    off_both += shape_hull_edges[s] != 2 && curve_edges[s] == 0;
-    off_shape_hull_only += shape_hull_edges[s] != 2 && curve_edges[s] != 0;
-  }
-  ASSERT_GT(off_both, 0);
-  ASSERT_EQ(off_shape_hull_only, 0);
+  PaperAndShapeHull both = paper_and_shape_hull(samples.points);
+  const DelaunayVoronoi& dv = both.dv;
+  const std::vector<int>& curve_edges = both.curve_edges;
+  const std::vector<int>& shape_hull_edges = both.shape_hull_edges;
+  ASSERT_GT(both.off_both, 0);
+  ASSERT_EQ(both.taken_off, 0);
   // The samples shape-hull brings on alone: off the labels' curve, with neither neighbour on
   // shape-hull's curve off it too.
   std::vector<int> brought_on_with_a_neighbour(dv.site_count(), 0);
-  for_each_curve_edge(dv, shape, [&](int a, int b) {
+  for_each_curve_edge(dv, both.shape, [&](int a, int b) {
     if (curve_edges[a] == 0 && curve_edges[b] == 0) brought_on_with_a_neighbour[a] = brought_on_with_a_neighbour[b] = 1;
   });
   int alone = 0;
   for (int s = 0; s < dv.site_count(); ++s) alone += curve_edges[s] == 0 && shape_hull_edges[s] == 2 && !brought_on_with_a_neighbour[s];
   ASSERT_GT(alone, 0);
-  EXPECT_TRUE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, inner, curve_edges));
-  EXPECT_EQ(inner, shape);
+  EXPECT_TRUE(take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, both.inner, curve_edges));
+  EXPECT_EQ(both.inner, both.shape);
   EXPECT_GT(std::count(shape_hull_edges.begin(), shape_hull_edges.end(), 2), std::count(curve_edges.begin(), curve_edges.end(), 2));
   EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(*run("shape-hull", samples.points).curve_edges));
 }

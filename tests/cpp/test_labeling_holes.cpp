@@ -750,13 +750,17 @@ PaperAndShapeHull paper_and_shape_hull(const std::vector<Point2>& points) {
   return both;
 }
 
-GeneratedInput generated(const std::string& family, ShapeValues shape, double epsilon, double outliers, std::uint64_t seed) {
+// An epsilon-sample of `family` (shape parameters `shape`), with `outliers` and Gaussian noise
+// along the normal of standard deviation `noise` lfs, on a true polyline of `dense` vertices.
+GeneratedInput generated_epsilon_sample(const std::string& family, ShapeValues shape, double epsilon, double noise,
+                                        double outliers, int dense, std::uint64_t seed) {
   GeneratorSettings settings;
   settings.family = family;
   settings.shape = std::move(shape);
   settings.epsilon = epsilon;
+  settings.noise = noise;
   settings.outliers = outliers;
-  settings.dense = 4096;
+  settings.dense = dense;
   settings.seed = seed;
   return generate(settings);
 }
@@ -782,7 +786,7 @@ TEST(LabelingHoles, TheShapeHullIsTakenWhereItLeavesAtMostHalfAsManySamplesOffAs
   // the paper's labels reach step 11 with the pocket's walls off the curve. Shape-hull's curve
   // runs down the pocket but stops short of some concave corners the labels' curve passes
   // through: it takes samples off, and leaves far fewer off than the labels. It is taken.
-  const GeneratedInput input = generated("star", {{"points", 8}}, 0.3, 0, 2);
+  const GeneratedInput input = generated_epsilon_sample("star", {{"points", 8}}, 0.3, 0, 0, 4096, 2);
   PaperAndShapeHull both = paper_and_shape_hull(input.points);
   ASSERT_GT(both.taken_off, 0);
   ASSERT_LE(2 * both.off_the_shape, both.off_the_labels);
@@ -799,7 +803,7 @@ TEST(LabelingHoles, TheShapeHullIsNotTakenWhereItWouldJoinALoneOutlierToTheCurve
   // curve exactly and leave the outliers off it. Shape-hull leaves fewer samples off, every one
   // of them off the labels' curve too, but it reaches outliers beside the curve with spikes
   // that replace true curve edges: the labels stay.
-  const GeneratedInput input = generated("dumbbell", {}, 0.15, 0.1, 2);
+  const GeneratedInput input = generated_epsilon_sample("dumbbell", {}, 0.15, 0, 0.1, 4096, 2);
   PaperAndShapeHull both = paper_and_shape_hull(input.points);
   ASSERT_GT(both.off_both, 0);
   ASSERT_LT(both.off_both, both.off_the_labels);
@@ -965,13 +969,7 @@ TEST(LabelingHoles, APocketThatSplitsTheCurveIsReportedAndTheShapeHullTaken) {
 // default.json's noisy epsilon-samples: `family` at epsilon, Gaussian noise along the normal
 // of standard deviation `noise` lfs, dense 1024.
 GeneratedInput noisy_epsilon_sample(const std::string& family, double epsilon, double noise, std::uint64_t seed) {
-  GeneratorSettings settings;
-  settings.family = family;
-  settings.epsilon = epsilon;
-  settings.noise = noise;
-  settings.dense = 1024;
-  settings.seed = seed;
-  return generate(settings);
+  return generated_epsilon_sample(family, {}, epsilon, noise, 0, 1024, seed);
 }
 
 TEST(LabelingHoles, RepairedLabelsGiveWayToAShorterShapeHullTour) {

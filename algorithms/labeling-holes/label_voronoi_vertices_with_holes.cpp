@@ -258,13 +258,16 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
       }
     }
   }
-  // Step 11 (shape_hull_through_every_sample.h) where the labels end with a fault and hold one
-  // curve, or where step 8 split their one curve.
+  // Step 11 (shape_hull_through_every_sample.h) where the labels end with a fault, or where
+  // step 8 split their one curve.
   auto take_the_shape_hull_where_one_curve_is_wrong = [&](const std::vector<int>& curve_edges) {
     if (pockets_split_one_curve) {
       take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, labels.inner, curve_edges);
-    } else if (!every_sample_has_two_curve_edges(dv, curve_edges) &&
-               curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges)) {
+    } else if (every_sample_has_two_curve_edges(dv, curve_edges)) {
+      return;
+    } else if (!curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges)) {
+      take_the_shape_hull_where_it_joins_pieces_of_one_curve(dv, labels.inner, curve_edges);
+    } else {
       // Where the only faults are pinches (every sample an even number of curve edges), the
       // labels' curve is a closed tour through every sample that touches itself: as in step
       // 12, shape-hull's tour replaces it only if shorter.

@@ -28,11 +28,9 @@ bool is_a_spike_over_a_curve_edge(const DelaunayVoronoi& dv, const std::vector<s
   return squared_distance(dv.sites[s], dv.sites[a]) > base && squared_distance(dv.sites[s], dv.sites[b]) > base;
 }
 
-}  // namespace
-
-bool curve_edges_form_one_connected_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
-                                          const std::vector<int>& curve_edges) {
-  // A union-find over the curve edges.
+// Per sample, a representative of the connected curve its curve edges under `inner` put it on
+// (itself where it has none): a union-find over the curve edges.
+std::vector<int> connected_curve_of_each_sample(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner) {
   std::vector<int> parent(dv.site_count());
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int s) {
@@ -43,8 +41,40 @@ bool curve_edges_form_one_connected_curve(const DelaunayVoronoi& dv, const std::
     a = root(a), b = root(b);
     if (a != b) parent[a] = b;
   });
+  for (int s = 0; s < dv.site_count(); ++s) parent[s] = root(s);
+  return parent;
+}
+
+// Whether every edge of shape-hull's curve that joins two of the labels' curves is no longer
+// than the longest curve edge of the labels at one of its ends. Noise and sparse strokes break
+// one curve into pieces that lie as close together as samples along them; disjoint curves,
+// sampled densely enough to be told apart, lie farther apart than their samples, and
+// shape-hull, whose triangles stay one disk, bridges them with edges longer than any of theirs.
+bool joins_the_labels_curves_only_across_gaps_no_wider_than_their_edges(const DelaunayVoronoi& dv,
+                                                                          const std::vector<std::uint8_t>& inner,
+                                                                          const std::vector<std::uint8_t>& shape) {
+  const std::vector<int> curve = connected_curve_of_each_sample(dv, inner);
+  std::vector<double> longest(dv.site_count(), 0.0);  // squared
+  for_each_curve_edge(dv, inner, [&](int a, int b) {
+    const double length = squared_distance(dv.sites[a], dv.sites[b]);
+    longest[a] = std::max(longest[a], length);
+    longest[b] = std::max(longest[b], length);
+  });
+  bool narrow = true;
+  for_each_curve_edge(dv, shape, [&](int a, int b) {
+    const bool joins_two_curves = longest[a] > 0 && longest[b] > 0 && curve[a] != curve[b];
+    if (joins_two_curves && squared_distance(dv.sites[a], dv.sites[b]) > std::max(longest[a], longest[b])) narrow = false;
+  });
+  return narrow;
+}
+
+}  // namespace
+
+bool curve_edges_form_one_connected_curve(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                                          const std::vector<int>& curve_edges) {
+  const std::vector<int> curve = connected_curve_of_each_sample(dv, inner);
   int curves = 0;
-  for (int s = 0; s < dv.site_count(); ++s) curves += curve_edges[s] > 0 && root(s) == s;
+  for (int s = 0; s < dv.site_count(); ++s) curves += curve_edges[s] > 0 && curve[s] == s;
   return curves == 1;
 }
 
@@ -56,12 +86,15 @@ bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::ve
   return true;
 }
 
-bool take_the_shape_hull_where_it_puts_more_samples_on_the_curve(const DelaunayVoronoi& dv,
-                                                                  std::vector<std::uint8_t>& inner,
-                                                                  const std::vector<int>& curve_edges) {
-  if (dv.dimension != 2) return false;
-  std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
-  const std::vector<int> shape_edges = curve_edges_per_sample(dv, shape);
+namespace {
+
+// Whether shape-hull's curve (`shape`, its counts `shape_edges`) explains more of the samples
+// than the labels (`inner`, their counts `curve_edges`), as take_the_shape_hull_where_it_puts_
+// more_samples_on_the_curve states; with `majority`, only where it leaves at most half as many
+// samples off a 1-manifold as the labels, whether or not it takes any off.
+bool shape_hull_explains_more(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
+                              const std::vector<int>& curve_edges, const std::vector<std::uint8_t>& shape,
+                              const std::vector<int>& shape_edges, bool majority) {
   // Samples off a 1-manifold: under the labels; under shape-hull, and of those how many are
   // off the labels' curve too (neither curve explains them).
   int off_the_labels = 0, off_the_shape = 0, off_both = 0;
@@ -74,25 +107,48 @@ bool take_the_shape_hull_where_it_puts_more_samples_on_the_curve(const DelaunayV
   }
   if (off_the_shape >= std::max(off_the_labels, 1)) return false;
   // Samples shape-hull takes off (ones the labels' curve passes through, or ones it makes a
-  // pinch of) are outweighed
-  // only where it leaves at most half as many off as the labels: its curve then explains most
-  // of what the labels' cannot (a pocket the paper closed off at its mouth, its walls off the
-  // curve, against the few concave corners the sculpting stops short of).
+  // pinch of) are outweighed only where it leaves at most half as many off as the labels: its
+  // curve then explains most of what the labels' cannot (a pocket the paper closed off at its
+  // mouth, its walls off the curve, against the few concave corners the sculpting stops short
+  // of).
   const bool takes_some_off = off_both < off_the_shape;
-  if (takes_some_off && 2 * off_the_shape > off_the_labels) return false;
-  if (off_both > 0) {
-    // Per sample brought on from no curve edge: its two neighbours on shape-hull's curve.
-    std::vector<std::array<int, 2>> neighbours(dv.site_count(), {-1, -1});
-    for_each_curve_edge(dv, shape, [&](int a, int b) {
-      if (curve_edges[a] == 0) neighbours[a][neighbours[a][0] < 0 ? 0 : 1] = b;
-      if (curve_edges[b] == 0) neighbours[b][neighbours[b][0] < 0 ? 0 : 1] = a;
-    });
-    for (int s = 0; s < dv.site_count(); ++s) {
-      if (curve_edges[s] != 0 || shape_edges[s] != 2) continue;
-      const auto [a, b] = neighbours[s];
-      const bool alone = curve_edges[a] != 0 && curve_edges[b] != 0;  // neither brought on with it
-      if (alone && is_a_spike_over_a_curve_edge(dv, inner, s, neighbours[s])) return false;
-    }
+  if ((takes_some_off || majority) && 2 * off_the_shape > off_the_labels) return false;
+  if (off_both == 0) return true;
+  // Per sample brought on from no curve edge: its two neighbours on shape-hull's curve.
+  std::vector<std::array<int, 2>> neighbours(dv.site_count(), {-1, -1});
+  for_each_curve_edge(dv, shape, [&](int a, int b) {
+    if (curve_edges[a] == 0) neighbours[a][neighbours[a][0] < 0 ? 0 : 1] = b;
+    if (curve_edges[b] == 0) neighbours[b][neighbours[b][0] < 0 ? 0 : 1] = a;
+  });
+  for (int s = 0; s < dv.site_count(); ++s) {
+    if (curve_edges[s] != 0 || shape_edges[s] != 2) continue;
+    const auto [a, b] = neighbours[s];
+    const bool alone = curve_edges[a] != 0 && curve_edges[b] != 0;  // neither brought on with it
+    if (alone && is_a_spike_over_a_curve_edge(dv, inner, s, neighbours[s])) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool take_the_shape_hull_where_it_puts_more_samples_on_the_curve(const DelaunayVoronoi& dv,
+                                                                  std::vector<std::uint8_t>& inner,
+                                                                  const std::vector<int>& curve_edges) {
+  if (dv.dimension != 2) return false;
+  std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
+  if (!shape_hull_explains_more(dv, inner, curve_edges, shape, curve_edges_per_sample(dv, shape), false)) return false;
+  inner = std::move(shape);
+  return true;
+}
+
+bool take_the_shape_hull_where_it_joins_pieces_of_one_curve(const DelaunayVoronoi& dv,
+                                                             std::vector<std::uint8_t>& inner,
+                                                             const std::vector<int>& curve_edges) {
+  if (dv.dimension != 2) return false;
+  std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
+  if (!shape_hull_explains_more(dv, inner, curve_edges, shape, curve_edges_per_sample(dv, shape), true) ||
+      !joins_the_labels_curves_only_across_gaps_no_wider_than_their_edges(dv, inner, shape)) {
+    return false;
   }
   inner = std::move(shape);
   return true;

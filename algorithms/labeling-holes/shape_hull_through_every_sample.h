@@ -1,6 +1,7 @@
 // Step 11 of labeling-holes: where the labels end with samples off the curve or on a pinch, or
 // with a curve step 8 split in two, the shape-hull of the samples instead, if its curve puts
-// more samples on a 1-manifold and takes none off, or leaves at most half as many off.
+// more samples on a 1-manifold and takes none off, or leaves at most half as many off (and,
+// where the labels hold several curves, joins them only as pieces of one).
 //
 // Every sample of a curve lies on it between its two neighbours, so labels under which a
 // sample has no curve edge, or four, are wrong there. Steps 6-10 repair the faults they can
@@ -16,15 +17,16 @@
 // It is taken only where it can be the answer and the labels cannot (the caller,
 // label_voronoi_vertices_with_holes.cpp, decides where): the labels are wrong somewhere (a
 // sample has other than two curve edges, or step 8 opened a pocket that left its samples on
-// two curves), they hold one curve (for such a pocket, the labels before step 8; shape-hull's
-// one curve cannot represent holes, nested or disjoint curves, nor the small closed curves
-// noise leaves, so labels with several are kept: this also spares noisy input the sculpting's
-// cost), and shape-hull's curve explains more of the samples
+// two curves), no missed curve was taken at step 4 (shape-hull's one curve cannot represent
+// holes, nested or disjoint curves, nor the small closed curves noise leaves: this also spares
+// noisy input the sculpting's cost), and shape-hull's curve explains more of the samples
 // (take_the_shape_hull_where_it_puts_more_samples_on_the_curve). Where the labels' only faults
 // are pinches, their curve is a tour through every sample, and the caller compares the two
-// tours' lengths instead (shape_hull_where_it_is_shorter.h). Shape-hull's kept triangles
-// then become the inner vertices, so the medial axis and the dominant points follow its curve
-// as they follow the labels'.
+// tours' lengths instead (shape_hull_where_it_is_shorter.h). Where the labels hold several
+// curves, shape-hull's must explain most of what they cannot and join them only as pieces of
+// one curve (take_the_shape_hull_where_it_joins_pieces_of_one_curve). Shape-hull's kept
+// triangles then become the inner vertices, so the medial axis and the dominant points follow
+// its curve as they follow the labels'.
 #pragma once
 
 #include <cstdint>
@@ -45,7 +47,8 @@ bool curve_edges_form_one_connected_curve(const DelaunayVoronoi& dv, const std::
 //      two curve edges, else false with `inner` as it came.
 bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner);
 
-// In:  Delaunay/Voronoi arrays; `inner`, the labels to replace; `curve_edges`, their counts
+// In:  Delaunay/Voronoi arrays; `inner`, the labels to replace, whose curve edges form one
+//      connected curve (or, after step 8 split it, did before); `curve_edges`, their counts
 //      per sample (curve_edges_per_sample.h).
 // Out: true with `inner` set to shape-hull's triangles if its curve puts more samples on a
 //      1-manifold than the labels' and takes none off, or leaves at most half as many off,
@@ -68,5 +71,21 @@ bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::ve
 bool take_the_shape_hull_where_it_puts_more_samples_on_the_curve(const DelaunayVoronoi& dv,
                                                                   std::vector<std::uint8_t>& inner,
                                                                   const std::vector<int>& curve_edges);
+
+// In:  as above, labels whose curve edges form several connected curves (or none).
+// Out: true with `inner` set to shape-hull's triangles where its one curve joins them as
+//      pieces of one curve, else false with `inner` as it came:
+//      - it leaves at most half as many samples off a 1-manifold as the labels, whether or not
+//        it takes any off, and brings on no lone sample that is a spike (as above);
+//      - every edge of its curve that joins two of the labels' curves is no longer than the
+//        longest curve edge of the labels at one of its ends. Noise and strokes narrower than
+//        the sampling break one curve into pinched pieces that lie as close together as the
+//        samples along them (`default.json`'s rose at epsilon 0.13, Gaussian noise 0.1 lfs,
+//        seed 3: eight pieces, 21 samples off them, 6 off shape-hull's curve); curves sampled
+//        densely enough to be told apart lie farther apart than their samples, and shape-hull,
+//        whose triangles stay one disk, would bridge them with longer edges.
+bool take_the_shape_hull_where_it_joins_pieces_of_one_curve(const DelaunayVoronoi& dv,
+                                                             std::vector<std::uint8_t>& inner,
+                                                             const std::vector<int>& curve_edges);
 
 }  // namespace curvebench

@@ -129,29 +129,32 @@ bool shape_hull_explains_more(const DelaunayVoronoi& dv, const std::vector<std::
   return true;
 }
 
+// Shape-hull's triangles into `inner` where its curve explains more of the samples than the
+// labels; for labels with several curves, by a majority and as pieces of one curve.
+bool take_the_shape_hull_where_it_explains_more(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                                                const std::vector<int>& curve_edges, bool several_curves) {
+  if (dv.dimension != 2) return false;
+  std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
+  if (!shape_hull_explains_more(dv, inner, curve_edges, shape, curve_edges_per_sample(dv, shape), several_curves) ||
+      (several_curves && !joins_the_labels_curves_only_across_gaps_no_wider_than_their_edges(dv, inner, shape))) {
+    return false;
+  }
+  inner = std::move(shape);
+  return true;
+}
+
 }  // namespace
 
 bool take_the_shape_hull_where_it_puts_more_samples_on_the_curve(const DelaunayVoronoi& dv,
                                                                   std::vector<std::uint8_t>& inner,
                                                                   const std::vector<int>& curve_edges) {
-  if (dv.dimension != 2) return false;
-  std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
-  if (!shape_hull_explains_more(dv, inner, curve_edges, shape, curve_edges_per_sample(dv, shape), false)) return false;
-  inner = std::move(shape);
-  return true;
+  return take_the_shape_hull_where_it_explains_more(dv, inner, curve_edges, false);
 }
 
 bool take_the_shape_hull_where_it_joins_pieces_of_one_curve(const DelaunayVoronoi& dv,
                                                              std::vector<std::uint8_t>& inner,
                                                              const std::vector<int>& curve_edges) {
-  if (dv.dimension != 2) return false;
-  std::vector<std::uint8_t> shape = shape_hull_triangles(dv);
-  if (!shape_hull_explains_more(dv, inner, curve_edges, shape, curve_edges_per_sample(dv, shape), true) ||
-      !joins_the_labels_curves_only_across_gaps_no_wider_than_their_edges(dv, inner, shape)) {
-    return false;
-  }
-  inner = std::move(shape);
-  return true;
+  return take_the_shape_hull_where_it_explains_more(dv, inner, curve_edges, true);
 }
 
 }  // namespace curvebench

@@ -91,28 +91,30 @@ namespace {
 // Whether shape-hull's curve (`shape`, its counts `shape_edges`) explains more of the samples
 // than the labels (`inner`, their counts `curve_edges`), as take_the_shape_hull_where_it_puts_
 // more_samples_on_the_curve states; with `majority`, only where it leaves at most half as many
-// samples off a 1-manifold as the labels, whether or not it takes any off.
+// samples off a 1-manifold as the labels.
 bool shape_hull_explains_more(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                               const std::vector<int>& curve_edges, const std::vector<std::uint8_t>& shape,
                               const std::vector<int>& shape_edges, bool majority) {
   // Samples off a 1-manifold: under the labels; under shape-hull, and of those how many are
-  // off the labels' curve too (neither curve explains them).
-  int off_the_labels = 0, off_the_shape = 0, off_both = 0;
+  // off the labels' curve too (neither curve explains them). Samples it brings onto a
+  // 1-manifold from off the labels', and samples it takes off the labels' 1-manifold: their
+  // difference is how many fewer it leaves off.
+  int off_the_labels = 0, off_the_shape = 0, off_both = 0, brought_on = 0, taken_off = 0;
   for (int s = 0; s < dv.site_count(); ++s) {
     if (dv.site_triangle[s] < 0) continue;
     off_the_labels += curve_edges[s] != 2;
+    brought_on += curve_edges[s] != 2 && shape_edges[s] == 2;
+    taken_off += curve_edges[s] == 2 && shape_edges[s] != 2;
     if (shape_edges[s] == 2) continue;
     ++off_the_shape;
     off_both += shape_edges[s] == 0 && curve_edges[s] == 0;
   }
   if (off_the_shape >= std::max(off_the_labels, 1)) return false;
-  // Samples shape-hull takes off (ones the labels' curve passes through, or ones it makes a
-  // pinch of) are outweighed only where it leaves at most half as many off as the labels: its
-  // curve then explains most of what the labels' cannot (a pocket the paper closed off at its
-  // mouth, its walls off the curve, against the few concave corners the sculpting stops short
-  // of).
-  const bool takes_some_off = off_both < off_the_shape;
-  if ((takes_some_off || majority) && 2 * off_the_shape > off_the_labels) return false;
+  // The balance of brought on against taken off, or the majority (the header says why; labels
+  // with several curves need the majority).
+  const bool at_most_half_as_many_off = 2 * off_the_shape <= off_the_labels;
+  const bool brings_on_twice_as_many = brought_on >= 2 * taken_off;
+  if (!at_most_half_as_many_off && (majority || !brings_on_twice_as_many)) return false;
   if (off_both == 0) return true;
   // Per sample brought on from no curve edge: its two neighbours on shape-hull's curve.
   std::vector<std::array<int, 2>> neighbours(dv.site_count(), {-1, -1});

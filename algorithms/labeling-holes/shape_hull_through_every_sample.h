@@ -1,7 +1,8 @@
 // Step 11 of labeling-holes: where the labels end with samples off the curve or on a pinch, or
 // with a curve step 8 split in two, the shape-hull of the samples instead, if its curve puts
-// more samples on a 1-manifold and takes none off, or leaves at most half as many off (and,
-// where the labels hold several curves, joins them only as pieces of one).
+// more samples on a 1-manifold and brings on at least twice as many as it takes off, or leaves
+// at most half as many off (and, where the labels hold several curves, joins them only as
+// pieces of one).
 //
 // Every sample of a curve lies on it between its two neighbours, so labels under which a
 // sample has no curve edge, or four, are wrong there. Steps 6-10 repair the faults they can
@@ -51,17 +52,17 @@ bool take_the_shape_hull_through_every_sample(const DelaunayVoronoi& dv, std::ve
 //      connected curve (or, after step 8 split it, did before); `curve_edges`, their counts
 //      per sample (curve_edges_per_sample.h).
 // Out: true with `inner` set to shape-hull's triangles if its curve puts more samples on a
-//      1-manifold than the labels' and takes none off, or leaves at most half as many off,
-//      else false with `inner` as it came:
+//      1-manifold than the labels' and brings on at least twice as many as it takes off, or
+//      leaves at most half as many off, else false with `inner` as it came:
 //      - fewer samples have other than two curve edges under shape-hull's triangles than under
 //        the labels (with none under the labels, shape-hull's curve passes through every
 //        sample);
-//      - every such sample has no curve edge under either (samples neither curve explains:
-//        outliers, or samples of a feature narrower than the sampling, a glyph's stem at 50
-//        points), or there are at most half as many of them as under the labels: a curve that
-//        explains most of what the labels' cannot (the walls of a pocket the paper closed off
-//        at its mouth) outweighs the few samples it takes off (concave corners the sculpting
-//        stops short of);
+//      - of the samples on which the two differ, at least twice as many are on shape-hull's
+//        1-manifold and off the labels' as the other way round (a curve that explains the
+//        walls of a pocket the paper closed off at its mouth, or a wing the labels cut across,
+//        outweighs a concave corner or two the sculpting stops short of), or shape-hull leaves
+//        at most half as many samples off as the labels. Nearer than two to one the counts say
+//        little (outlines with outliers, where hundreds of samples are off both curves);
 //      - where a sample is left off both, no sample that shape-hull brings onto the curve alone
 //        (from off the labels' curve, with neither curve neighbour brought on from off it too)
 //        is a spike over a curve edge of the labels: between the two ends of such an edge, and

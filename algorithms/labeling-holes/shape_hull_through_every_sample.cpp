@@ -96,20 +96,21 @@ bool shape_hull_explains_more(const DelaunayVoronoi& dv, const std::vector<std::
                               const std::vector<int>& curve_edges, const std::vector<std::uint8_t>& shape,
                               const std::vector<int>& shape_edges, bool majority) {
   // Samples off a 1-manifold: under the labels; under shape-hull, and of those how many are
-  // off the labels' curve too (neither curve explains them). Samples it brings onto a
-  // 1-manifold from off the labels', and samples it takes off the labels' 1-manifold: their
-  // difference is how many fewer it leaves off.
-  int off_the_labels = 0, off_the_shape = 0, off_both = 0, brought_on = 0, taken_off = 0;
+  // off the labels' curve too (neither curve explains them), and the samples it brings onto a
+  // 1-manifold from off the labels'.
+  int off_the_labels = 0, off_the_shape = 0, off_both = 0, brought_on = 0;
   for (int s = 0; s < dv.site_count(); ++s) {
     if (dv.site_triangle[s] < 0) continue;
     off_the_labels += curve_edges[s] != 2;
     brought_on += curve_edges[s] != 2 && shape_edges[s] == 2;
-    taken_off += curve_edges[s] == 2 && shape_edges[s] != 2;
     if (shape_edges[s] == 2) continue;
     ++off_the_shape;
     off_both += shape_edges[s] == 0 && curve_edges[s] == 0;
   }
   if (off_the_shape >= std::max(off_the_labels, 1)) return false;
+  // The samples it takes off the labels' 1-manifold: brought on less taken off is how many
+  // fewer it leaves off.
+  const int taken_off = brought_on - (off_the_labels - off_the_shape);
   // The balance of brought on against taken off, or the majority (the header says why; labels
   // with several curves need the majority).
   const bool at_most_half_as_many_off = 2 * off_the_shape <= off_the_labels;

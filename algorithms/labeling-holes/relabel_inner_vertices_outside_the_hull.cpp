@@ -1,6 +1,7 @@
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
 
 #include "labeling-holes/curve_edges_per_sample.h"
+#include "voronoi/convex_hull_membership.h"
 
 namespace curvebench {
 
@@ -8,9 +9,9 @@ int relabel_inner_vertices_outside_the_hull(const DelaunayVoronoi& dv, std::vect
                                             const std::vector<int>& curve_edges) {
   if (!every_sample_has_two_curve_edges(dv, curve_edges)) return 0;
   std::vector<int> outside;
-  int hull_wedge = 0;  // consecutive triangles lie close together: the hull search gallops
+  ConvexHullMembership hull(dv);
   for (int t = 0; t < dv.triangle_count(); ++t) {
-    if (inner[t] && !in_convex_hull(dv, dv.circumcenters[t], hull_wedge)) outside.push_back(t);
+    if (inner[t] && !hull.contains(dv.circumcenters[t])) outside.push_back(t);
   }
   if (outside.empty()) return 0;
   for (int t : outside) inner[t] = 0;

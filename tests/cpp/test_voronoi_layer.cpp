@@ -11,6 +11,7 @@
 
 #include "test_support.h"
 #include "labeling/side_of_tangent_line.h"
+#include "voronoi/convex_hull_membership.h"
 #include "voronoi/delaunay_voronoi.h"
 #include "voronoi/sort_by_decreasing_circumradius.h"
 
@@ -216,6 +217,7 @@ TEST(VoronoiLayer, ConvexHullMembershipFromAnyWedgeHint) {
   };
   std::uniform_int_distribution<int> coordinate(-120000, 120000), hint(-5, m + 5);
   int wedge = 0;  // carried from query to query, as the labeler does
+  ConvexHullMembership membership(dv);
   for (int k = 0; k < 4000; ++k) {
     // A quarter of the queries lie on the boundary (a hull vertex or the midpoint of a hull
     // edge), a quarter just outside the middle of a hull edge, where only that edge's wedge
@@ -231,6 +233,39 @@ TEST(VoronoiLayer, ConvexHullMembershipFromAnyWedgeHint) {
     EXPECT_EQ(in_convex_hull(dv, q, wedge), expected) << q.x << " " << q.y;
     int fresh_hint = 0;
     EXPECT_EQ(in_convex_hull(dv, q, fresh_hint), expected) << q.x << " " << q.y;
+    EXPECT_EQ(membership.contains(q), expected) << q.x << " " << q.y;
+  }
+}
+
+// ConvexHullMembership decides most queries by a disk per sector and must agree with the exact
+// test everywhere: on a hull of three corners (each edge spans many sectors), far from the
+// origin (the disks' margins scale with the coordinates), just inside and just outside edges.
+TEST(VoronoiLayer, ConvexHullMembershipAgreesWithTheExactTest) {
+  std::mt19937 rng(11);
+  for (const Point2 offset : {Point2{0, 0}, Point2{3e6, -5e6}}) {
+    std::vector<Point2> points = {{0, 0}, {40000, 1000}, {2000, 30000}};
+    std::uniform_int_distribution<int> inside(1000, 9000);
+    for (int i = 0; i < 50; ++i) points.push_back({double(inside(rng)), double(inside(rng))});
+    for (Point2& p : points) p = p + offset;
+    const auto dv = build_delaunay_voronoi(points);
+    ASSERT_EQ(dv.hull.size(), 3u);
+    ConvexHullMembership membership(dv);
+    std::uniform_int_distribution<int> coordinate(-5000, 45000);
+    for (int k = 0; k < 20000; ++k) {
+      const Point2 q = Point2{double(coordinate(rng)), double(coordinate(rng))} + offset;
+      int wedge = 0;
+      EXPECT_EQ(membership.contains(q), in_convex_hull(dv, q, wedge)) << q.x << " " << q.y;
+    }
+    for (std::size_t i = 0; i < 3; ++i) {  // on each edge, and a unit to either side
+      const Point2 a = dv.sites[dv.hull[i]], b = dv.sites[dv.hull[(i + 1) % 3]];
+      const Point2 middle{(a.x + b.x) / 2, (a.y + b.y) / 2};
+      EXPECT_TRUE(membership.contains(middle));
+      EXPECT_TRUE(membership.contains(a));
+      const Point2 normal = Point2{b.y - a.y, a.x - b.x};
+      const double unit = 1 / std::hypot(normal.x, normal.y);
+      EXPECT_FALSE(membership.contains(middle + unit * normal));
+      EXPECT_TRUE(membership.contains(middle + (-unit) * normal));
+    }
   }
 }
 

@@ -27,6 +27,7 @@ class ConvexHullMembership {
 
   bool contains(Point2 q) { return in_a_disk(q) || in_convex_hull(dv_, q, wedge_); }
 
+ private:
   // True only if q lies inside the hull: in the disk of every sector, or of its own.
   bool in_a_disk(Point2 q) const {
     const Point2 d = q - centre_;
@@ -35,9 +36,8 @@ class ConvexHullMembership {
            (!disk_radius_squared_.empty() && squared < disk_radius_squared_[sector_of(d)]);
   }
 
- private:
   static constexpr int kSectors = 4096;
-  // The sector of direction d (not zero), counter-clockwise from the positive x axis.
+  // The sector of direction d, counter-clockwise from the positive x axis (0 for d = 0).
   static int sector_of(Point2 d);
 
   const DelaunayVoronoi& dv_;

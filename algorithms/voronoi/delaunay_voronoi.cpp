@@ -343,8 +343,20 @@ bool in_convex_hull(const DelaunayVoronoi& dv, Point2 q, int& wedge) {
   auto P = [&](int s) { return cgal::Point(dv.sites[s].x, dv.sites[s].y); };
   const cgal::Point query(q.x, q.y);
   const cgal::Point origin = P(h[0]);
-  if (CGAL::orientation(origin, P(h[1]), query) == CGAL::RIGHT_TURN) return false;
-  if (CGAL::orientation(origin, P(h[m - 1]), query) == CGAL::LEFT_TURN) return false;
+  const CGAL::Orientation first = CGAL::orientation(origin, P(h[1]), query);
+  const CGAL::Orientation last = CGAL::orientation(origin, P(h[m - 1]), query);
+  if (first == CGAL::RIGHT_TURN || last == CGAL::LEFT_TURN) return false;
+  if (first == CGAL::COLLINEAR || last == CGAL::COLLINEAR) {
+    // On the line of a hull edge through the origin. `hull` keeps the sites collinear with
+    // the origin there, whose wedges of the fan below are flat and cannot tell a point on the
+    // edge from one beyond its end; the query is in the hull exactly when it lies between the
+    // two ends of the run of hull sites on that line (the origin is one of them, or inside it).
+    const cgal::Point along = P(first == CGAL::COLLINEAR ? h[1] : h[m - 1]);
+    int forward = 0, backward = 0;  // the run is h[m - backward], ..., h[0], ..., h[forward]
+    while (forward + 1 < m && CGAL::collinear(origin, along, P(h[forward + 1]))) ++forward;
+    while (backward + 1 < m - forward && CGAL::collinear(origin, along, P(h[m - 1 - backward]))) ++backward;
+    return CGAL::collinear_are_ordered_along_line(P(h[(m - backward) % m]), query, P(h[forward]));
+  }
   // The fan wedge: the largest i in [1, m-2] with the query left of or on the ray
   // origin -> h[i]. That holds for every i up to the answer and for none after, and for i = 1.
   auto left_of_ray = [&](int i) { return CGAL::orientation(origin, P(h[i]), query) != CGAL::RIGHT_TURN; };

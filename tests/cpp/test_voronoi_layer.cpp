@@ -269,6 +269,33 @@ TEST(VoronoiLayer, ConvexHullMembershipAgreesWithTheExactTest) {
   }
 }
 
+// Hull edges through collinear sites (`hull` keeps them): a lattice, its hull listed from a
+// corner and from the middle of an edge. Points on the edges' lines beyond their ends are
+// outside; in_convex_hull's fan from hull[0] has flat wedges along the edges through it, where
+// it once answered inside.
+TEST(VoronoiLayer, ConvexHullMembershipOnEdgesThroughCollinearSites) {
+  for (const Point2 first : {Point2{0, 0}, Point2{5, 0}}) {
+    std::vector<Point2> lattice = {first};
+    for (int i = 0; i < 12; ++i) {
+      for (int j = 0; j < 12; ++j) {
+        if (Point2{double(i), double(j)} != first) lattice.push_back({double(i), double(j)});
+      }
+    }
+    const auto dv = build_delaunay_voronoi(lattice);
+    ASSERT_EQ(dv.sites[dv.hull[0]], first);  // the fan's origin: a corner, then mid-edge
+    ConvexHullMembership membership(dv);
+    int wedge = 0;
+    for (int i = -4; i <= 26; ++i) {
+      for (int j = -4; j <= 26; ++j) {
+        const Point2 q{i / 2.0, j / 2.0};
+        const bool inside = q.x >= 0 && q.x <= 11 && q.y >= 0 && q.y <= 11;
+        EXPECT_EQ(in_convex_hull(dv, q, wedge), inside) << q.x << " " << q.y;
+        EXPECT_EQ(membership.contains(q), inside) << q.x << " " << q.y;
+      }
+    }
+  }
+}
+
 // for_each_by_decreasing_circumradius is the full sort with the entries reached before their
 // turn left out, also when reaching changes during the visits and radii tie (a grid's
 // triangles all have one circumradius; the rose's do not), and whatever the list's order.

@@ -23,6 +23,15 @@ inline double distance(Point2 a, Point2 b) { return norm(a - b); }
 // The squared distance, for comparing distances without square roots.
 inline double squared_distance(Point2 a, Point2 b) { return dot(a - b, a - b); }
 
+// A cheap key of the direction of v, increasing with atan2(v.y, v.x): the "diamond angle",
+// v / (|x| + |y|) on the unit diamond, y / (|x| + |y|) in [-1, 1] for x >= 0, continued to
+// (-2, 2] for x < 0. NaN for the zero vector.
+inline double diamond_angle(Point2 v) {
+  const double r = v.y / (std::fabs(v.y) + std::fabs(v.x));
+  if (v.x >= 0) return r;
+  return v.y >= 0 ? 2 - r : -2 - r;
+}
+
 // The point of segment ab closest to p (a itself when the segment is a point).
 inline Point2 closest_point_on_segment(Point2 p, Point2 a, Point2 b) {
   const Point2 ab = b - a;

@@ -26,14 +26,6 @@ struct Scratch {
   std::vector<char> have_theta, seen;
 };
 
-// Diamond angle of (b, a) = (u . d, u x d): a / (|a| + |b|) in the right half-plane, continued
-// monotonically to (-2, 2] in the left one.
-double diamond_angle(double a, double b) {
-  const double r = a / (std::fabs(a) + std::fabs(b));
-  if (b >= 0) return r;
-  return a >= 0 ? 2 - r : -2 - r;
-}
-
 // Whether the key alone settles the side and the order: keys near 0 or +-2 (theta near 0 or
 // +-pi, where rounding and the wrap decide) or undefined ones do not.
 bool key_settles(double key) {
@@ -82,7 +74,7 @@ int sort_by_angle_about(Point2 center, Point2 site, std::span<const Point2> neig
     if (j < 0 || j >= k || scratch.seen[j]) return;
     scratch.seen[j] = 1;
     const Point2 d = neighbors[j] - center;
-    const double key = diamond_angle(cross(u, d), dot(u, d));
+    const double key = diamond_angle({dot(u, d), cross(u, d)});  // of the angle from u to d
     entries.push_back({key, j, key_settles(key)});
   };
   for (int j : order) add(j);

@@ -3,17 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace curvebench {
 
 int ConvexHullMembership::sector_of(Point2 d) {
-  // The "diamond angle": d / (|x| + |y|) on the unit diamond, its perimeter walked
-  // counter-clockwise from (1, 0) in four quarters of length 1. The zero vector maps to
-  // sector 0, whose disk contains it as every disk does.
-  const double sum = std::abs(d.x) + std::abs(d.y);
-  if (!(sum > 0)) return 0;
-  const double p = d.y >= 0 ? (d.x >= 0 ? d.y / sum : 1 - d.x / sum) : (d.x < 0 ? 2 - d.y / sum : 3 + d.x / sum);
-  return std::clamp(static_cast<int>(p * (kSectors / 4)), 0, kSectors - 1);
+  // The diamond angle taken to [0, 4): the unit diamond's perimeter walked counter-clockwise
+  // from (1, 0) in four quarters of length 1. The zero vector (NaN) maps to sector 0, whose
+  // disk contains it as every disk does.
+  double key = diamond_angle(d);
+  if (std::isnan(key)) return 0;
+  if (key < 0) key += 4;
+  return std::clamp(static_cast<int>(key * (kSectors / 4)), 0, kSectors - 1);
 }
 
 ConvexHullMembership::ConvexHullMembership(const DelaunayVoronoi& dv) : dv_(dv) {
@@ -29,7 +30,7 @@ ConvexHullMembership::ConvexHullMembership(const DelaunayVoronoi& dv) : dv_(dv) 
   // The distances below are exact to a few units in the last place of the coordinates'
   // magnitude; a margin a thousand times that keeps every disk strictly inside.
   const double margin = 1e-12 * scale;
-  std::vector<double> radius(kSectors, std::numeric_limits<double>::infinity());
+  std::vector<double> radius_squared(kSectors, std::numeric_limits<double>::infinity());
   for (int i = 0; i < m; ++i) {
     const Point2 a = dv.sites[hull[i]] - centre_, b = dv.sites[hull[(i + 1) % m]] - centre_;
     const Point2 edge = b - a;
@@ -40,14 +41,12 @@ ConvexHullMembership::ConvexHullMembership(const DelaunayVoronoi& dv) : dv_(dv) 
     const int first = sector_of(a) - 1, last = sector_of(b) + 1;
     const int span = ((last - first) % kSectors + kSectors) % kSectors;
     for (int k = 0; k <= span; ++k) {
-      double& r = radius[((first + k) % kSectors + kSectors) % kSectors];
-      r = std::min(r, distance);
+      double& r = radius_squared[((first + k) % kSectors + kSectors) % kSectors];
+      r = std::min(r, distance * distance);
     }
   }
-  disk_radius_squared_.resize(kSectors);
-  for (int s = 0; s < kSectors; ++s) {
-    disk_radius_squared_[s] = std::isfinite(radius[s]) ? radius[s] * radius[s] : 0.0;
-  }
+  for (double& r : radius_squared) r = std::isfinite(r) ? r : 0.0;  // a sector no edge covers
+  disk_radius_squared_ = std::move(radius_squared);
   smallest_radius_squared_ = *std::min_element(disk_radius_squared_.begin(), disk_radius_squared_.end());
 }
 

@@ -30,25 +30,31 @@ void for_each_curve_edge(const DelaunayVoronoi& dv, const std::vector<std::uint8
   }
 }
 
-// visit(end, t, next) for each curve edge site-end at one sample (with a cell: site_triangle
-// >= 0), t and next the triangles on its two sides (next is kInfinite for a hull edge): a walk
-// around its fan, counter-clockwise from site_triangle (for a hull site the first triangle of
-// its open fan).
-template <class Visit>
-void for_each_curve_edge_at(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, int site,
-                            Visit&& visit) {
+// visit(end, t, next) for each Delaunay edge site-end at one sample (with a cell: site_triangle
+// >= 0) whose two sides t and next have different labels, label(t) for a finite triangle and
+// 0 for the infinite vertex (next is kInfinite for a hull edge): a walk around its fan,
+// counter-clockwise from site_triangle (for a hull site the first triangle of its open fan).
+template <class Label, class Visit>
+void for_each_label_change_at(const DelaunayVoronoi& dv, Label&& label, int site, Visit&& visit) {
   const int first = dv.site_triangle[site];
   const int first_corner = corner_of_site(dv, first, site);
-  if (dv.neighbors[first][(first_corner + 2) % 3] == kInfinite && inner[first]) {
+  if (dv.neighbors[first][(first_corner + 2) % 3] == kInfinite && label(first) != 0) {
     visit(dv.triangles[first][(first_corner + 1) % 3], first, kInfinite);
   }
   int t = first;
   do {
     const int corner = corner_of_site(dv, t, site);
     const int next = dv.neighbors[t][(corner + 1) % 3];
-    if (inner[t] != (next != kInfinite && inner[next] != 0)) visit(dv.triangles[t][(corner + 2) % 3], t, next);
+    if (label(t) != (next == kInfinite ? 0 : label(next))) visit(dv.triangles[t][(corner + 2) % 3], t, next);
     t = next;
   } while (t != kInfinite && t != first);
+}
+
+// The curve edges at one sample: the label changes of `inner` (1 inner, 0 outer) around it.
+template <class Visit>
+void for_each_curve_edge_at(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner, int site,
+                            Visit&& visit) {
+  for_each_label_change_at(dv, [&](int t) { return inner[t] != 0; }, site, visit);
 }
 
 // Whether every sample with a cell (site_triangle >= 0) has exactly two curve edges: the

@@ -79,9 +79,13 @@ OpenedPockets open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std
   std::vector<int> source(dv.site_count(), kUnpaired);
   std::vector<std::uint8_t> flags(dv.triangle_count(), 0);
   std::vector<int> degree(dv.site_count(), 0);
-  std::vector<int> reached, pocket, stack, samples, edges_before, lone;
+  std::vector<std::uint8_t> listed(dv.site_count(), 0);  // per sample: in `samples` already
+  std::vector<int> reached, pocket, stack, samples, lone;
   std::vector<Edge> boundary, walls, tested, tip_edges, continuations;
-  std::vector<std::uint8_t> on_a_tested_curve_edge(dv.site_count(), 0);
+  // Per sample, for the continuations: at the end of a tested curve edge, or looked at already
+  // (a sample between two walls ends both, and its continuations are the same for each).
+  enum : std::uint8_t { kOnATestedCurveEdge = 1, kContinued = 2 };
+  std::vector<std::uint8_t> wall_end(dv.site_count(), 0);
   // The curve edges at `site` with no side in the pocket (they stay on the curve).
   auto add_continuations = [&](int site) {
     auto outside_the_pocket = [&](int t) { return t == kInfinite || !(flags[t] & kInPocket); };
@@ -176,20 +180,7 @@ OpenedPockets open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std
         tested.push_back(e);
       }
     }
-    // A wall's end sample lies beside the next sample of the curve the wall joins, at the
-    // curve edge the pocket keeps: that neighbour is on the curve, no sample the wall passes
-    // by (disjoint at epsilon 0.9, seed 4: the walls 29-30-31 and 19-20 of the corridor over
-    // sample 30, whose ends lie nearer 18 and 28 than the walls are long). Not at the ends of
-    // a curve edge the test takes (a second mouth, a tip's edge): a chord across another slot
-    // ends beside that slot's other wall, which is the next sample of its own curve.
-    continuations.clear();
-    for (const Edge& e : tip_edges) on_a_tested_curve_edge[e[0]] = on_a_tested_curve_edge[e[1]] = 1;
-    for (const Edge& w : walls) {
-      for (int site : w) {
-        if (!on_a_tested_curve_edge[site]) add_continuations(site);
-      }
-    }
-    for (const Edge& e : tip_edges) on_a_tested_curve_edge[e[0]] = on_a_tested_curve_edge[e[1]] = 0;
+    for (const Edge& e : tip_edges) wall_end[e[0]] = wall_end[e[1]] = kOnATestedCurveEdge;  // for the continuations
     for (const Edge& w : walls) {
       for (int site : w) longest_wall[site] = std::max(longest_wall[site], length(w));
     }
@@ -198,10 +189,9 @@ OpenedPockets open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std
              length(e) > std::max(longest_wall[e[0]], longest_wall[e[1]]);
     });
     for (const Edge& w : walls) longest_wall[w[0]] = longest_wall[w[1]] = -1.0;
-    bool simple = true;
-    for (const Edge& e : boundary) simple = ++degree[e[0]] <= 2 && ++degree[e[1]] <= 2 && simple;
+    bool take = true;
+    for (const Edge& e : boundary) take = ++degree[e[0]] <= 2 && ++degree[e[1]] <= 2 && take;
     for (const Edge& e : boundary) degree[e[0]] = degree[e[1]] = 0;
-    bool take = simple && stand_apart(tested, continuations);
 
     // And afterwards every sample of the pocket has exactly two curve edges, one of them
     // having had none (a wall joins the curve). A sample with none left is a tip the pocket's
@@ -214,39 +204,74 @@ OpenedPockets open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std
     // edge off the curve is a walk across the shape, whose walls would replace true curve
     // edges (concavities at 50 random samples, seed 4: from the mouth 35-41 into the next slot
     // and over 31-32, 26-29 and 28-37).
+    samples.clear();  // each once, in no particular order
+    lone.clear();
+    bool gains = false;
     if (take) {
-      samples.clear();
-      for (int t : pocket) samples.insert(samples.end(), dv.triangles[t].begin(), dv.triangles[t].end());
-      std::sort(samples.begin(), samples.end());
-      samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
-      edges_before.clear();
-      for (int site : samples) edges_before.push_back(curve_edges_at(dv, inner, site));
-      for (int t : pocket) inner[t] = 0;
-      bool gains = false;
-      lone.clear();
+      for (int t : pocket) {
+        for (int site : dv.triangles[t]) {
+          if (!listed[site]) samples.push_back(site);
+          listed[site] = 1;
+        }
+      }
+      for (int site : samples) listed[site] = 0;
+      // Bit 0 the label now, bit 1 the label with the pocket opened (outer), so that one walk
+      // around a sample counts its curve edges before and after.
+      auto now_and_opened = [&](int t) {
+        const int now = inner[t] != 0;
+        return now | (now & ((flags[t] & kInPocket) == 0)) << 1;
+      };
       for (std::size_t i = 0; i < samples.size() && take; ++i) {
-        const int edges = curve_edges_at(dv, inner, samples[i]);
+        int before = 0, edges = 0;
+        for_each_label_change_at(dv, now_and_opened, samples[i], [&](int, int t, int next) {
+          const int change = now_and_opened(t) ^ (next == kInfinite ? 0 : now_and_opened(next));
+          before += change & 1;
+          edges += change >> 1;
+        });
         if (edges == 0) lone.push_back(samples[i]);
         take = edges == 2 || edges == 0;
-        gains = gains || (edges_before[i] == 0 && edges == 2);
+        gains = gains || (before == 0 && edges == 2);
       }
+      std::sort(lone.begin(), lone.end());
       for (const Edge& e : tip_edges) {
         take = take && (std::binary_search(lone.begin(), lone.end(), e[0]) ||
                         std::binary_search(lone.begin(), lone.end(), e[1]));
       }
-      take = take && gains && (lone.empty() || join_lone_samples(dv, inner, lone));
-      if (!take) {
-        for (int t : pocket) inner[t] = 1;
-      }
-      // Opened from one mouth, a pocket replaces the mouth edge by a path down its walls, so
-      // its samples stay on one curve; only a corridor, with its second mouth, splits the
-      // curve it joined in two. Where they end on two, a tip the mouth had cut off closed
-      // into a loop of its own when it was joined (star at 50 random samples, seed 1: the
-      // mouth 41-48, the walls 48-...-43, the tip 39-40-41-42 a loop apart from 43). The
-      // pocket stays open, as the curves are still closer to the truth than with it closed
-      // (the `C` at 50 random samples, seed 3, closed at its mouth 29-48), and is reported.
-      opened.split_a_curve = opened.split_a_curve || (take && !a_second_mouth && !on_one_curve(samples));
     }
+    take = take && gains;
+    // The stand-apart test, the costliest, once everything else holds but the joining.
+    // A wall's end sample lies beside the next sample of the curve the wall joins, at the
+    // curve edge the pocket keeps: that neighbour is on the curve, no sample the wall passes
+    // by (disjoint at epsilon 0.9, seed 4: the walls 29-30-31 and 19-20 of the corridor over
+    // sample 30, whose ends lie nearer 18 and 28 than the walls are long). Not at the ends of
+    // a curve edge the test takes (a second mouth, a tip's edge): a chord across another slot
+    // ends beside that slot's other wall, which is the next sample of its own curve.
+    if (take) {
+      continuations.clear();
+      for (const Edge& w : walls) {
+        for (int site : w) {
+          if (!wall_end[site]) add_continuations(site);
+          wall_end[site] |= kContinued;
+        }
+      }
+      take = stand_apart(tested, continuations);
+    }
+    for (const Edge& e : tested) wall_end[e[0]] = wall_end[e[1]] = 0;  // the walls and every tip edge
+    if (take) {
+      for (int t : pocket) inner[t] = 0;
+      if (!lone.empty() && !join_lone_samples(dv, inner, lone)) {
+        for (int t : pocket) inner[t] = 1;
+        take = false;
+      }
+    }
+    // Opened from one mouth, a pocket replaces the mouth edge by a path down its walls, so
+    // its samples stay on one curve; only a corridor, with its second mouth, splits the
+    // curve it joined in two. Where they end on two, a tip the mouth had cut off closed
+    // into a loop of its own when it was joined (star at 50 random samples, seed 1: the
+    // mouth 41-48, the walls 48-...-43, the tip 39-40-41-42 a loop apart from 43). The
+    // pocket stays open, as the curves are still closer to the truth than with it closed
+    // (the `C` at 50 random samples, seed 3, closed at its mouth 29-48), and is reported.
+    opened.split_a_curve = opened.split_a_curve || (take && !a_second_mouth && !on_one_curve(samples));
     if (take) opened.relabelled += static_cast<int>(pocket.size());
     // Fresh sources and flags for the next mouth: a vertex this walk stopped may be reached
     // again from another mouth.

@@ -1001,6 +1001,34 @@ TEST(LabelingHoles, ThePocketsOfAnSThePaperClosedOffAreOpened) {
   }
 }
 
+TEST(LabelingHoles, APocketOpensOnlyWhereOneOfItsSamplesJoinsTheCurve) {
+  // silhouettes.json's spade (U+2660) at 80 random samples, seed 2: a walk from a mouth across
+  // the stem passes step 8's other tests, and opened, its walls would take the curve from
+  // 4-5, 6-7, 75-76 and 77-78 (the truth, as the labels have it) to 4-6, 5-77, 7-75 and 76-78
+  // across the stem. Every sample of it had two curve edges before, so no wall joins a sample
+  // the paper left off the curve: the pocket stays closed.
+  constexpr const char* kGlyphSpade =
+      "0.44921875 0.72859375\n0.5100390625 0.6337109375000001\n0.600625 0.5121875\n"
+      "0.6880859375 0.40339843750000004\n0.71921875 0.34859375\n0.733515625 0.30777343749999997\n"
+      "0.73828125 0.268125\n0.73828125 0.24859375\n0.718515625 0.17570312500000002\n0.65921875 0.12015625\n"
+      "0.631953125 0.1120703125\n0.60203125 0.109375\n0.5340625 0.1363671875\n0.48046875 0.21734375\n"
+      "0.46 0.21734375\n0.46 0.21140625000000002\n0.4701171875 0.08949218750000001\n0.50046875 0.0\n"
+      "0.39546875000000004 0.0\n0.39546875000000004 0.00296875\n0.426640625 0.093046875\n"
+      "0.43703125 0.21578125\n0.435625 0.21734375\n0.41703125 0.21734375\n0.3940625 0.174375\n"
+      "0.3473828125 0.125625\n0.29046875 0.109375\n0.2127734375 0.1348828125\n"
+      "0.1621875 0.21140625000000002\n0.15765625 0.24703125\n0.15765625 0.26953125\n"
+      "0.1805078125 0.361328125\n0.2490625 0.45796875000000004\n0.375234375 0.61953125\n"
+      "0.44625000000000004 0.72703125\n0.4478125 0.72859375\n";
+  const SampledScene samples = glyph_sample(kGlyphSpade, 80, 2);
+  const std::vector<Edge> edges = sorted(*run("labeling-holes", samples.points).curve_edges);
+  for (const Edge& e : std::vector<Edge>{{4, 5}, {6, 7}, {75, 76}, {77, 78}}) {
+    EXPECT_TRUE(std::binary_search(edges.begin(), edges.end(), e)) << e[0] << "-" << e[1];
+  }
+  for (const Edge& e : std::vector<Edge>{{4, 6}, {5, 77}, {7, 75}, {76, 78}}) {
+    EXPECT_FALSE(std::binary_search(edges.begin(), edges.end(), e)) << e[0] << "-" << e[1];
+  }
+}
+
 TEST(LabelingHoles, TheTipsOfASparseStarThePaperCutsOffAreJoined) {
   // sparse_outlines.json's star at 30 random samples, seeds 1 and 3: the paper's curve cuts a
   // tip off (the chord 10-12 past sample 11, 15-17 past 16), whose triangle is an EVV outside

@@ -156,6 +156,31 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
   return across;
 }
 
+// Whether no two samples without a curve edge (`curve_edges` 0) are Delaunay neighbours: with
+// evidence left, the condition for step 9. An enclosed sample the curve passes by, alone, lies
+// in a one-triangle pocket a-s-b the paper closed at its mouth a-b, the mirror of a tip cut off
+// by its chord. Step 8's walk from that mouth runs on through the sample's whole fan, whose
+// triangles all hold an enclosed sample, and its pocket is refused; step 9 joins the sample
+// through the triangle (noise.json's ellipse at noise 0.1, seed 2: sample 84 beside the curve
+// edge 83-85, its fan reaching across the ellipse). A run of neighbouring lone samples is a
+// pocket's wall that step 8 could not open without leaving evidence, and joined one triangle
+// at a time it becomes a path through the pocket (the horned shape at 30 random samples, seed
+// 8: the horn's inner side, seven lone samples, joined into a tour across the shape).
+bool lone_samples_stand_alone(const DelaunayVoronoi& dv, const std::vector<int>& curve_edges) {
+  for (int site = 0; site < dv.site_count(); ++site) {
+    if (dv.site_triangle[site] < 0 || curve_edges[site] != 0) continue;
+    const int first = dv.site_triangle[site];
+    int t = first;
+    do {
+      for (int other : dv.triangles[t]) {
+        if (other != site && curve_edges[other] == 0) return false;
+      }
+      t = dv.neighbors[t][(corner_of_site(dv, t, site) + 1) % 3];
+    } while (t != kInfinite && t != first);
+  }
+  return true;
+}
+
 }  // namespace
 
 VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
@@ -260,35 +285,39 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   }
   // Step 11 (shape_hull_through_every_sample.h) where the labels end with a fault, or where
   // step 8 split their one curve.
+  // True if it took shape-hull's triangles.
   auto take_the_shape_hull_where_one_curve_is_wrong = [&](const std::vector<int>& curve_edges) {
     if (pockets_split_one_curve) {
-      take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, labels.inner, curve_edges);
-    } else if (every_sample_has_two_curve_edges(dv, curve_edges)) {
-      return;
-    } else if (!curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges)) {
-      take_the_shape_hull_where_it_joins_pieces_of_one_curve(dv, labels.inner, curve_edges);
-    } else {
-      // Where the only faults are pinches (every sample an even number of curve edges), the
-      // labels' curve is a closed tour through every sample that touches itself: as in step
-      // 12, shape-hull's tour replaces it only if shorter.
-      auto on_a_tour = [](int edges) { return edges >= 2 && edges % 2 == 0; };
-      if (std::all_of(curve_edges.begin(), curve_edges.end(), on_a_tour)) {
-        take_the_shape_hull_where_it_is_shorter(dv, labels.inner);
-      } else {
-        take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, labels.inner, curve_edges);
-      }
+      return take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, labels.inner, curve_edges);
     }
+    if (every_sample_has_two_curve_edges(dv, curve_edges)) return false;
+    if (!curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges)) {
+      return take_the_shape_hull_where_it_joins_pieces_of_one_curve(dv, labels.inner, curve_edges);
+    }
+    // Where the only faults are pinches (every sample an even number of curve edges), the
+    // labels' curve is a closed tour through every sample that touches itself: as in step 12,
+    // shape-hull's tour replaces it only if shorter.
+    auto on_a_tour = [](int edges) { return edges >= 2 && edges % 2 == 0; };
+    if (std::all_of(curve_edges.begin(), curve_edges.end(), on_a_tour)) {
+      return take_the_shape_hull_where_it_is_shorter(dv, labels.inner);
+    }
+    return take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, labels.inner, curve_edges);
   };
   // The loop stops with evidence left only where no part was taken: those samples' cells lie
-  // in the last region, all of one label, so they have no curve edge. Unless step 10 puts them
-  // on the curve, the repairs below would leave the labels as they are unless every sample
-  // has two (steps 6 and 7 of the rule), and step 9 joins no enclosed sample. Labels that end
-  // with a sample off the curve or on a pinch go to step 11, unless missed curves were found,
-  // which shape-hull's one curve cannot hold (tested first: noisy input, where step 4 takes
-  // such curves, pays no pass counting curve edges).
+  // in the last region, all of one label, so they have no curve edge, and steps 6, 7 and 10
+  // change nothing while a sample has none. Labels that end with a sample off the curve or on
+  // a pinch go to step 11, unless missed curves were found, which shape-hull's one curve cannot
+  // hold (tested first: noisy input, where step 4 takes such curves, pays no pass counting
+  // curve edges). Where step 11 keeps the labels, lone samples apart from each other are
+  // joined by step 9 (lone_samples_stand_alone), and the repairs of a 1-manifold follow.
   if (!enclosed.empty() && !open_corridors_over_the_evidence()) {
-    if (!found_missed_curves) take_the_shape_hull_where_one_curve_is_wrong(curve_edges_per_sample(dv, labels.inner));
-    return labels;
+    if (found_missed_curves) return labels;
+    const std::vector<int> counts = curve_edges_per_sample(dv, labels.inner);
+    if (take_the_shape_hull_where_one_curve_is_wrong(counts) || !lone_samples_stand_alone(dv, counts) ||
+        join_lone_samples_to_the_curve(dv, labels.inner, counts) == 0) {
+      return labels;
+    }
+    repaired = true;
   }
   // One count of curve edges serves both repairs unless the first changes the labels.
   std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);

@@ -1029,6 +1029,41 @@ TEST(LabelingHoles, APocketOpensOnlyWhereOneOfItsSamplesJoinsTheCurve) {
   }
 }
 
+TEST(LabelingHoles, AnEnclosedSampleTheCurvePassesByAloneIsJoined) {
+  // noise.json's ellipse at epsilon 0.1 with uniform noise of 0.1 lfs, seed 2: noise moves
+  // sample 84 inwards, the paper's curve runs 83-85 past it and its whole cell is inner. No
+  // level, pocket or corridor explains that evidence, and shape-hull is not taken (step 11);
+  // alone among the samples without a curve edge, 84 is joined through the triangle 83-84-85
+  // (lone_samples_stand_alone in label_voronoi_vertices_with_holes.cpp, then step 9), and the
+  // curve is the true one.
+  GeneratorSettings settings;
+  settings.family = "ellipse";
+  settings.epsilon = 0.1;
+  settings.noise = 0.1;
+  settings.noise_model = "uniform";
+  settings.dense = 2048;
+  settings.seed = 2;
+  const GeneratedInput input = generate(settings);
+  const PaperLabelsAndEvidence paper = paper_labels_and_evidence(input.points);
+  EXPECT_EQ(paper.enclosed, std::vector<int>{paper.dv.site_of_input[84]});
+  const std::vector<Edge> paper_edges = sorted(*run("labeling", input.points).curve_edges);
+  EXPECT_TRUE(std::binary_search(paper_edges.begin(), paper_edges.end(), Edge{83, 85}));
+  EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges));
+}
+
+TEST(LabelingHoles, WithEvidenceLeftNeighbouringLoneSamplesAreNotJoined) {
+  // sparse_outlines.json's horned shape at 30 random samples, seed 8: the paper's curve
+  // crosses the horn's opening and leaves the seven samples of its inner side without a curve
+  // edge, neighbours of each other. Joined one triangle at a time (step 9 where lone samples
+  // are all that is wrong) they became a tour across the shape; with evidence left, step 9
+  // joins only lone samples that stand alone, and these keep the paper's labels.
+  const GeneratedInput input = sparse_outline("horned", 30, 8);
+  const PaperLabelsAndEvidence paper = paper_labels_and_evidence(input.points);
+  const std::vector<int> counts = curve_edges_per_sample(paper.dv, paper.labels.inner);
+  EXPECT_EQ(std::count(counts.begin(), counts.end(), 0), 7);
+  EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(*run("labeling", input.points).curve_edges));
+}
+
 TEST(LabelingHoles, TheTipsOfASparseStarThePaperCutsOffAreJoined) {
   // sparse_outlines.json's star at 30 random samples, seeds 1 and 3: the paper's curve cuts a
   // tip off (the chord 10-12 past sample 11, 15-17 past 16), whose triangle is an EVV outside

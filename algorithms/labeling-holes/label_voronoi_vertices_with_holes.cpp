@@ -333,8 +333,19 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   }
   // Corridors without swallowed samples, on a 1-manifold: from every triangle.
   if (!every_sample_has_two_curve_edges(dv, curve_edges)) {
-    if (!found_missed_curves) take_the_shape_hull_where_one_curve_is_wrong(curve_edges);
-    return labels;
+    if (found_missed_curves) return labels;
+    // Step 10 with the labels swapped: outer corridors the crust reads as inside (a stroke
+    // the paper's walk entered through a triangle spanning it), relabelled inner, stand only
+    // if the curve is then a 1-manifold through every sample.
+    const std::vector<int> filled = split_curves_joined_across_a_corridor(dv, labels.inner, 0);
+    std::vector<int> counts = filled.empty() ? curve_edges : curve_edges_per_sample(dv, labels.inner);
+    if (!every_sample_has_two_curve_edges(dv, counts)) {
+      for (int t : filled) labels.inner[t] = 0;
+      take_the_shape_hull_where_one_curve_is_wrong(curve_edges);
+      return labels;
+    }
+    curve_edges = std::move(counts);
+    repaired = true;
   }
   repaired |= !split_curves_joined_across_a_corridor(dv, labels.inner).empty();
   if (found_missed_curves) return labels;

@@ -23,23 +23,26 @@ bool angle_at_least_45_degrees(const DelaunayVoronoi& dv, int t, int k) {
 
 }  // namespace
 
-std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner) {
+std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
+                                                       std::uint8_t side) {
   std::vector<int> seeds;
   for (int t = 0; t < dv.triangle_count(); ++t) {
     for (int k = 0; k < 3; ++k) {
       const int next = dv.neighbors[t][k];
       if (inner[t] == is_inner(inner, next) || !angle_at_least_45_degrees(dv, t, k)) continue;
-      seeds.push_back(inner[t] ? t : next);  // the curve edge's inner triangle
+      const int seed = inner[t] == side ? t : next;  // the curve edge's triangle on `side`
+      if (seed != kInfinite) seeds.push_back(seed);
     }
   }
   if (seeds.empty()) return {};
   std::sort(seeds.begin(), seeds.end());
   seeds.erase(std::unique(seeds.begin(), seeds.end()), seeds.end());
-  return split_curves_joined_across_a_corridor(dv, inner, seeds);
+  return split_curves_joined_across_a_corridor(dv, inner, seeds, side);
 }
 
 std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
-                                                       std::span<const int> seeds) {
+                                                       std::span<const int> seeds, std::uint8_t side) {
+  auto label = [&](int t) { return t == kInfinite ? 0 : inner[t]; };  // the infinite vertex is outer
   // Per triangle: grown into no corridor yet, into the one growing, or into one before (taken
   // or not), so that each is grown once.
   enum : std::uint8_t { kNotGrown, kGrowing, kGrown };
@@ -52,13 +55,13 @@ std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv
   std::vector<std::uint8_t> touched_now(dv.site_count(), 0);  // per sample: on the corridor growing
   std::vector<int> relabelled;
   for (int seed : seeds) {
-    if (!inner[seed] || grown[seed] != kNotGrown) continue;
+    if (inner[seed] != side || grown[seed] != kNotGrown) continue;
     bool starts = false;  // a curve edge that fails the crust test
     for (int k = 0; k < 3 && !starts; ++k) {
-      starts = !is_inner(inner, dv.neighbors[seed][k]) && !is_one_step_crust_edge(dv, seed, k);
+      starts = label(dv.neighbors[seed][k]) != side && !is_one_step_crust_edge(dv, seed, k);
     }
     if (!starts) continue;
-    // The corridor: inner triangles joined across edges that fail the crust test.
+    // The corridor: triangles of `side` joined across edges that fail the crust test.
     corridor.clear();
     removed.clear();
     added.clear();
@@ -72,9 +75,9 @@ std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv
         const int next = dv.neighbors[t][k];
         if (next != kInfinite && grown[next] == kGrowing) continue;  // in this corridor
         const Edge e{dv.triangles[t][(k + 1) % 3], dv.triangles[t][(k + 2) % 3]};
-        if (!is_inner(inner, next)) {
+        if (label(next) != side) {
           removed.push_back(e);
-        } else if (is_one_step_crust_edge(dv, t, k)) {
+        } else if (next == kInfinite || is_one_step_crust_edge(dv, t, k)) {  // a hull edge: on the curve once relabelled
           added.push_back(e);
         } else {  // not crust, so never an edge of a corridor grown before
           grown[next] = kGrowing;
@@ -106,7 +109,7 @@ std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv
       manifold = manifold && count[site] + change[site] == 2;
     }
     if (manifold) {
-      for (int t : corridor) inner[t] = 0;
+      for (int t : corridor) inner[t] = 1 - side;
       for (int site : touched) count[site] += change[site];
       relabelled.insert(relabelled.end(), corridor.begin(), corridor.end());
     }

@@ -31,11 +31,21 @@
 // opens a one-triangle pocket at a sharp concave corner that the paper closed with a chord
 // (the 8-pointed star at epsilon 0.12, seed 1: 325-327 instead of 325-326-327).
 //
+// The same with the labels swapped (`side` 0): corridors of outer triangles inside the shape
+// that the crust reads as inside, relabelled inner. Where a stroke is narrower than the gaps
+// between its samples, the paper's walk can enter it through a triangle that spans it
+// (holes.json's 7 at 50 random samples, seed 1: the triangle 11-38-39 across the stroke,
+// whose edge 38-39 lies on the convex hull; the curve runs 11-38 and 11-39 instead of 38-39,
+// and sample 11 has four curve edges). Its edges to inner triangles fail the test. A hull
+// edge of such a corridor needs none: outside Conv(P) lies outside every polygon on the
+// samples (Section 3.3 of the paper), so with the corridor inside, the curve runs along the
+// hull edge; relabelled inner, the curve takes 38-39 and every sample keeps two.
+//
 // In:  Delaunay/Voronoi arrays (dimension 2); `inner`, per triangle, 1 for inner (the infinite
 //      vertex is outer); `seeds`, the triangles to grow corridors from, in order (a seed
-//      that is not inner, lies in a corridor grown already, or has no curve edge that fails
-//      the test is skipped).
-// Out: `inner` with the corridors' triangles set to 0; returns those triangles.
+//      whose label is not `side`, lies in a corridor grown already, or has no curve edge that
+//      fails the test is skipped); `side`, the label of the corridors' triangles.
+// Out: `inner` with the corridors' triangles set to 1 - side; returns those triangles.
 #pragma once
 
 #include <cstdint>
@@ -47,11 +57,11 @@
 namespace curvebench {
 
 std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
-                                                       std::span<const int> seeds);
+                                                       std::span<const int> seeds, std::uint8_t side = 1);
 
-// The same from every triangle: the seeds are the inner triangles at curve edges with an angle
-// of 45 degrees or more opposite them on either side (a curve edge that fails the test has
-// one), in index order, so that a pass over the triangles' own corners finds them.
-std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner);
+// The same from every triangle: the seeds are the triangles of label `side` at curve edges with
+// an angle of 45 degrees or more opposite them on either side (a curve edge that fails the
+// test has one), in index order, so that a pass over the triangles' own corners finds them.
+std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner, std::uint8_t side = 1);
 
 }  // namespace curvebench

@@ -1091,6 +1091,22 @@ TEST(LabelingHoles, AStrokeThePaperEnteredAcrossItIsInnerWhereTheCrustReadsItAsI
   EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), sorted(samples.true_edges));
 }
 
+TEST(LabelingHoles, AMouthWhoseWallBeginsAtItsEndIsOpened) {
+  // outliers.json's horned shape at epsilon 0.15 without outliers, seeds 2 and 3: the paper's
+  // curve closes the horn off with a chord across its opening (78-265, 1.58 long, at seed 2),
+  // and the sample down the wall from its end (266) lies 0.0009 from 265, so the chord is not
+  // strictly its triangle's longest edge. Step 8 takes it as a mouth all the same
+  // (is_mouth_edge in open_pockets_closed_at_their_mouths.cpp) and opens the horn.
+  for (std::uint64_t seed : {2, 3}) {
+    const GeneratedInput input = generated_epsilon_sample("horned", {}, 0.15, 0, 0, 4096, seed);
+    const std::vector<Edge> truth = sorted(input.truth.edges);
+    const std::vector<Edge> paper = sorted(*run("labeling", input.points).curve_edges);
+    EXPECT_NE(paper, truth) << "seed " << seed;
+    if (seed == 2) EXPECT_EQ(edges_among(paper, {{78, 265}}).size(), 1u);
+    EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), truth) << "seed " << seed;
+  }
+}
+
 TEST(LabelingHoles, TheTipsOfASparseStarThePaperCutsOffAreJoined) {
   // sparse_outlines.json's star at 30 random samples, seeds 1 and 3: the paper's curve cuts a
   // tip off (the chord 10-12 past sample 11, 15-17 past 16), whose triangle is an EVV outside

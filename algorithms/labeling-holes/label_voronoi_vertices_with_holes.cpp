@@ -284,8 +284,7 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     }
   }
   // Step 11 (shape_hull_through_every_sample.h) where the labels end with a fault, or where
-  // step 8 split their one curve.
-  // True if it took shape-hull's triangles.
+  // step 8 split their one curve; true if it took shape-hull's triangles.
   auto take_the_shape_hull_where_one_curve_is_wrong = [&](const std::vector<int>& curve_edges) {
     if (pockets_split_one_curve) {
       return take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, labels.inner, curve_edges);
@@ -331,7 +330,6 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     repaired = true;
     curve_edges = curve_edges_per_sample(dv, labels.inner);
   }
-  // Corridors without swallowed samples, on a 1-manifold: from every triangle.
   if (!every_sample_has_two_curve_edges(dv, curve_edges)) {
     if (found_missed_curves) return labels;
     // Step 10 with the labels swapped: outer corridors the crust reads as inside (a stroke
@@ -347,6 +345,7 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     curve_edges = std::move(counts);
     repaired = true;
   }
+  // Corridors without swallowed samples, on a 1-manifold: from every triangle.
   repaired |= !split_curves_joined_across_a_corridor(dv, labels.inner).empty();
   if (found_missed_curves) return labels;
   if (pockets_split_one_curve) {

@@ -16,14 +16,10 @@ bool is_inner(const std::vector<std::uint8_t>& inner, int t) { return t != kInfi
 // strictly the longest of the three, or c lies within a quarter of |ab| of a or b. Either way
 // c is the first sample down a wall from an end. The second clause is for a wall sample all
 // but on the mouth's end, where the longest-edge test turns on which side of the end it fell
-// (holes.json's e at 1600 random samples, seed 2: the mouth 743-1160 is 0.14405 long, the
-// sample 1159 down the terminal's wall lies 0.00023 from 1160 and 0.14411 from 743). No mouth
-// was found there, and the e's channel and counter stayed closed off (L2 0.76-0.78 at 800
-// samples, seeds 2, 3 and 5, and at 1600, seeds 2 to 5; all now exact). The quarter, against
-// the longest-edge test alone on the lh sweeps: a quarter gained 24 exact runs in holes.json
-// and 16 in default.json, with one run worse (by 0.0002); a half gained 30 and 17 with 9 runs
-// worse; any nearer end (the edge not the shortest) gained 38 and 18 with 20 worse, 12 of
-// them silhouettes at 30-50 samples (up to 0.32), whose thin strokes it opened.
+// (holes.json's e at 1600 random samples, seed 2: the mouth 743-1160, the sample 1159 down the
+// terminal's wall 0.00023 from 1160 and 0.00005 farther from 743 than 1160 is): no mouth was
+// found, and the e's channel and counter stayed closed off. A quarter, not more: wider
+// clauses also open the thin strokes of sparse silhouettes (README.md, step 8).
 bool is_mouth_edge(const DelaunayVoronoi& dv, int t, int k) {
   const Point2 c = dv.sites[dv.triangles[t][k]], a = dv.sites[dv.triangles[t][(k + 1) % 3]],
                b = dv.sites[dv.triangles[t][(k + 2) % 3]];
@@ -39,17 +35,17 @@ bool mouth_edge_on_the_curve(const DelaunayVoronoi& dv, const std::vector<std::u
   return false;
 }
 
-// Mouths: inner triangles with a curve edge a-b shaped like a mouth (is_mouth_edge), in the fan of an enclosed
-// sample or beside a triangle of one (the walk from the mouth goes through those). On an
-// epsilon-sample a curve edge joins consecutive samples, so its diametral disk holds no other
+// Mouths: inner triangles with a curve edge a-b shaped like a mouth (is_mouth_edge), in the fan of
+// an enclosed sample or beside a triangle of one (the walk from the mouth goes through those). On
+// an epsilon-sample a curve edge joins consecutive samples, so its diametral disk holds no other
 // sample and it is never the longest edge of a triangle whose third sample lies in that disk's
-// neighbourhood; a pocket's mouth is wider than the way from its ends to the first samples
-// down its walls. The test keeps the thin strokes of a glyph out: there the curve edge is the
-// triangle's shortest, and the enclosed sample across the stroke lies on a hole's curve.
-// Beside, not only in the fan: where the paper's curve crosses a star's valley from one tip's
-// flank to the other's, the mouth's third sample is the first one down a wall, which the walk
-// from outside had paired (its cell holds outer vertices), and the enclosed walls begin one
-// triangle further in (star at 50 random samples, seed 5: mouth 12-25 over sample 24).
+// neighbourhood; a pocket's mouth is wider than the way from its ends to the first samples down its
+// walls. The test keeps the thin strokes of a glyph out: there the curve edge is the triangle's
+// shortest, and the enclosed sample across the stroke lies on a hole's curve. Beside, not only in
+// the fan: where the paper's curve crosses a star's valley from one tip's flank to the other's, the
+// mouth's third sample is the first one down a wall, which the walk from outside had paired (its
+// cell holds outer vertices), and the enclosed walls begin one triangle further in (star at 50
+// random samples, seed 5: mouth 12-25 over sample 24).
 std::vector<int> mouths_in_order(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner,
                                  std::span<const int> enclosed_samples) {
   std::vector<int> mouths;

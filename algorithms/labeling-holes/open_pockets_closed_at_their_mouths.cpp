@@ -151,23 +151,22 @@ OpenedPockets open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std
       }
     }
 
-    // The pocket's boundary must be one closed curve through each of its samples once. Its
-    // walls are the edges that join the curve when it opens; the curve edges on it leave the
-    // curve. Those are its mouths (each its triangle's longest edge, as the chord the paper
-    // drew), a corridor's second mouth, and the edges of a tip the mouth cut off (see the
-    // end). Every edge of the boundary but the mouths must stand apart like a hole's
-    // (missed_curves_stand_apart.h): the mouth would count its ends against the pocket, while
-    // a tip's samples are on the curve once joined, and counted off it they would stand
-    // beside the walls (the star at 30 random samples, seed 4: the tip samples 0 and 1 beside
-    // the wall 2-3).
+    // The pocket's boundary must be one closed curve through each of its samples once. Its walls
+    // are the edges that join the curve when it opens; the curve edges on it leave the curve.
+    // Those are its mouths (each shaped like a mouth in its triangle, is_mouth_edge, as the chord
+    // the paper drew), a corridor's second mouth, and the edges of a tip the mouth cut off (see
+    // the end). Every edge of the boundary but the mouths must stand apart like a hole's
+    // (missed_curves_stand_apart.h): the mouth would count its ends against the pocket, while a
+    // tip's samples are on the curve once joined, and counted off it they would stand beside the
+    // walls (the star at 30 random samples, seed 4: the tip samples 0 and 1 beside the wall 2-3).
     //
     // A corridor between two curves the paper joined has two mouths and few samples besides
     // (disjoint at epsilon 0.8, seed 4: mouths 26-40 and 24-42, walls 24-25-26 and 40-41-42);
-    // seen from one, the other need not be its triangle's longest edge. A curve edge is a
-    // second mouth when a wall meets it at each end and it is longer than each of them. Like
-    // the walls it must stand apart: a chord across another slot does not, that slot's other
-    // wall lying nearer its ends than it is long (concavities at 30 random samples, seed 3:
-    // from the mouth 5-10 across the shape's middle to the chord 27-4).
+    // seen from one, the other need not be shaped like a mouth. A curve edge is a second mouth
+    // when a wall meets it at each end and it is longer than each of them. Like the walls it must
+    // stand apart: a chord across another slot does not, that slot's other wall lying nearer its
+    // ends than it is long (concavities at 30 random samples, seed 3: from the mouth 5-10 across
+    // the shape's middle to the chord 27-4).
     boundary.clear();
     walls.clear();
     tested.clear();

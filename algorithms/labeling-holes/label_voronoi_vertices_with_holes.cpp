@@ -167,16 +167,9 @@ std::vector<int> parts_across_missed_curves(const DelaunayVoronoi& dv, const std
 // at a time it becomes a path through the pocket (the horned shape at 30 random samples, seed
 // 8: the horn's inner side, seven lone samples, joined into a tour across the shape).
 bool lone_samples_stand_alone(const DelaunayVoronoi& dv, const std::vector<int>& curve_edges) {
+  auto lone = [&](int site) { return curve_edges[site] == 0; };
   for (int site = 0; site < dv.site_count(); ++site) {
-    if (dv.site_triangle[site] < 0 || curve_edges[site] != 0) continue;
-    const int first = dv.site_triangle[site];
-    int t = first;
-    do {
-      for (int other : dv.triangles[t]) {
-        if (other != site && curve_edges[other] == 0) return false;
-      }
-      t = dv.neighbors[t][(corner_of_site(dv, t, site) + 1) % 3];
-    } while (t != kInfinite && t != first);
+    if (dv.site_triangle[site] >= 0 && lone(site) && any_delaunay_neighbor(dv, site, lone)) return false;
   }
   return true;
 }
@@ -336,8 +329,9 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     // the paper's walk entered through a triangle spanning it), relabelled inner, stand only
     // if the curve is then a 1-manifold through every sample.
     const std::vector<int> filled = split_curves_joined_across_a_corridor(dv, labels.inner, 0);
-    std::vector<int> counts = filled.empty() ? curve_edges : curve_edges_per_sample(dv, labels.inner);
-    if (!every_sample_has_two_curve_edges(dv, counts)) {
+    std::vector<int> counts;
+    if (!filled.empty()) counts = curve_edges_per_sample(dv, labels.inner);
+    if (filled.empty() || !every_sample_has_two_curve_edges(dv, counts)) {
       for (int t : filled) labels.inner[t] = 0;
       take_the_shape_hull_where_one_curve_is_wrong(curve_edges);
       return labels;

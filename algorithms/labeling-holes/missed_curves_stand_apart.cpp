@@ -12,16 +12,9 @@ MissedCurvesStandApart::MissedCurvesStandApart(const DelaunayVoronoi& dv)
 // hull site its whole fan (delaunay_voronoi.h), whose first and last triangles hold its two
 // hull neighbours.
 bool MissedCurvesStandApart::has_a_nearer_sample_off_the_curves(int site, double squared_edge) const {
-  const int first = dv_.site_triangle[site];
-  int t = first;
-  do {
-    const int corner = corner_of_site(dv_, t, site);
-    for (int other : {dv_.triangles[t][(corner + 1) % 3], dv_.triangles[t][(corner + 2) % 3]}) {
-      if (longest_[other] < 0 && squared_distance(dv_.sites[site], dv_.sites[other]) <= squared_edge) return true;
-    }
-    t = dv_.neighbors[t][(corner + 1) % 3];
-  } while (t != kInfinite && t != first);
-  return false;
+  return any_delaunay_neighbor(dv_, site, [&](int other) {
+    return longest_[other] < 0 && squared_distance(dv_.sites[site], dv_.sites[other]) <= squared_edge;
+  });
 }
 
 bool MissedCurvesStandApart::operator()(const std::vector<Edge>& curves, const std::vector<Edge>& continuations) {

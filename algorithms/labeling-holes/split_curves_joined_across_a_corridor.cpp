@@ -9,8 +9,6 @@
 namespace curvebench {
 namespace {
 
-bool is_inner(const std::vector<std::uint8_t>& inner, int t) { return t != kInfinite && inner[t] != 0; }
-
 // Whether the angle at corner k of triangle t is at least 45 degrees, with a margin for
 // rounding (a superset: the crust test decides). A curve edge that fails the crust test has
 // angles at the two opposite corners summing to 90 degrees or more, so one of them is at
@@ -25,11 +23,12 @@ bool angle_at_least_45_degrees(const DelaunayVoronoi& dv, int t, int k) {
 
 std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
                                                        std::uint8_t side) {
+  auto label = [&](int t) { return t == kInfinite ? 0 : inner[t]; };  // the infinite vertex is outer
   std::vector<int> seeds;
   for (int t = 0; t < dv.triangle_count(); ++t) {
     for (int k = 0; k < 3; ++k) {
       const int next = dv.neighbors[t][k];
-      if (inner[t] == is_inner(inner, next) || !angle_at_least_45_degrees(dv, t, k)) continue;
+      if (inner[t] == label(next) || !angle_at_least_45_degrees(dv, t, k)) continue;
       const int seed = inner[t] == side ? t : next;  // the curve edge's triangle on `side`
       if (seed != kInfinite) seeds.push_back(seed);
     }

@@ -34,7 +34,7 @@ ConvexHullMembership::ConvexHullMembership(const DelaunayVoronoi& dv) : dv_(dv) 
   for (int i = 0; i < m; ++i) {
     const Point2 a = dv.sites[hull[i]] - centre_, b = dv.sites[hull[(i + 1) % m]] - centre_;
     const Point2 edge = b - a;
-    const double distance = cross(edge, Point2{0, 0} - a) / std::hypot(edge.x, edge.y) - margin;
+    const double distance = cross(edge, Point2{0, 0} - a) / norm(edge) - margin;
     if (!(distance > 0)) return;  // the centre is not clearly inside: no disks, every query exact
     // The sectors from a's to b's, counter-clockwise (an edge seen from an interior point spans
     // less than half a turn), one more at each end for the rounding of the pseudo-angle.

@@ -31,7 +31,7 @@ class ConvexHullMembership {
   // True only if q lies inside the hull: in the disk of every sector, or of its own.
   bool in_a_disk(Point2 q) const {
     const Point2 d = q - centre_;
-    const double squared = d.x * d.x + d.y * d.y;
+    const double squared = dot(d, d);
     return squared < smallest_radius_squared_ ||
            (!disk_radius_squared_.empty() && squared < disk_radius_squared_[sector_of(d)]);
   }

@@ -70,6 +70,21 @@ inline int corner_of_site(const DelaunayVoronoi& dv, int triangle, int site) {
   return t[0] == site ? 0 : (t[1] == site ? 1 : 2);
 }
 
+// Whether pred(q) holds for some Delaunay neighbour q of `site` (which must have a cell,
+// site_triangle >= 0): its fan walked counter-clockwise from site_triangle, each triangle's
+// other two corners asked in turn, stopping at the first that holds.
+template <class Pred>
+bool any_delaunay_neighbor(const DelaunayVoronoi& dv, int site, Pred&& pred) {
+  const int first = dv.site_triangle[site];
+  int t = first;
+  do {
+    const int corner = corner_of_site(dv, t, site);
+    if (pred(dv.triangles[t][(corner + 1) % 3]) || pred(dv.triangles[t][(corner + 2) % 3])) return true;
+    t = dv.neighbors[t][(corner + 1) % 3];
+  } while (t != kInfinite && t != first);
+  return false;
+}
+
 // The benchmark's floor: CGAL's documented range insertion of (point, index) pairs, the
 // fastest documented way to a triangulation whose vertices know their input index. Returns
 // its vertex count. build_delaunay_voronoi builds the same triangulation faster by

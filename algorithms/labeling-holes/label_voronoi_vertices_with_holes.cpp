@@ -11,6 +11,7 @@
 #include "labeling-holes/enclosed_samples.h"
 #include "labeling-holes/join_lone_samples_to_the_curve.h"
 #include "labeling-holes/missed_curves_stand_apart.h"
+#include "labeling-holes/open_loops_of_three_samples.h"
 #include "labeling-holes/open_pockets_closed_at_their_mouths.h"
 #include "labeling-holes/relabel_bridging_ears.h"
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
@@ -295,61 +296,71 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
     }
     return take_the_shape_hull_where_it_puts_more_samples_on_the_curve(dv, labels.inner, curve_edges);
   };
-  // The loop stops with evidence left only where no part was taken: those samples' cells lie
-  // in the last region, all of one label, so they have no curve edge, and steps 6, 7 and 10
-  // change nothing while a sample has none. Labels that end with a sample off the curve or on
-  // a pinch go to step 11, unless missed curves were found, which shape-hull's one curve cannot
-  // hold (tested first: noisy input, where step 4 takes such curves, pays no pass counting
-  // curve edges). Where step 11 keeps the labels, lone samples apart from each other are
-  // joined by step 9 (lone_samples_stand_alone), and the repairs of a 1-manifold follow.
-  if (!enclosed.empty() && !open_corridors_over_the_evidence()) {
-    if (found_missed_curves) return labels;
-    const std::vector<int> counts = curve_edges_per_sample(dv, labels.inner);
-    if (take_the_shape_hull_where_one_curve_is_wrong(counts) || !lone_samples_stand_alone(dv, counts) ||
-        join_lone_samples_to_the_curve(dv, labels.inner, counts) == 0) {
-      return labels;
+  // Step 9's first part (open_loops_of_three_samples.h), before the counts of step 11 and the
+  // repairs: the samples of a tip cut off into a loop of its own are lone once it is opened.
+  // Missed curves keep their loops, as they keep the other repairs.
+  const std::vector<int> loops = found_missed_curves ? std::vector<int>{} : open_loops_of_three_samples(dv, labels.inner);
+  repaired = repaired || !loops.empty();
+  // Steps 9-12, ended at the first step that settles the labels.
+  auto repair = [&] {
+    // The loop stops with evidence left only where no part was taken: those samples' cells lie
+    // in the last region, all of one label, so they have no curve edge, and steps 6, 7 and 10
+    // change nothing while a sample has none. Labels that end with a sample off the curve or on
+    // a pinch go to step 11, unless missed curves were found, which shape-hull's one curve cannot
+    // hold (tested first: noisy input, where step 4 takes such curves, pays no pass counting
+    // curve edges). Where step 11 keeps the labels, lone samples apart from each other are
+    // joined by step 9 (lone_samples_stand_alone), and the repairs of a 1-manifold follow.
+    if (!enclosed.empty() && !open_corridors_over_the_evidence()) {
+      if (found_missed_curves) return;
+      const std::vector<int> counts = curve_edges_per_sample(dv, labels.inner);
+      if (take_the_shape_hull_where_one_curve_is_wrong(counts) || !lone_samples_stand_alone(dv, counts) ||
+          join_lone_samples_to_the_curve(dv, labels.inner, counts) == 0) {
+        return;
+      }
+      repaired = true;
     }
-    repaired = true;
-  }
-  // One count of curve edges serves both repairs unless the first changes the labels.
-  std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);
-  if (relabel_bridging_ears(dv, labels.inner, curve_edges) > 0) {
-    repaired = true;
-    curve_edges = curve_edges_per_sample(dv, labels.inner);
-  }
-  repaired |= relabel_inner_vertices_outside_the_hull(dv, labels.inner, curve_edges) > 0;
-  // Steps 6 and 7 change nothing while a sample has no curve edge, so the counts still hold.
-  if (join_lone_samples_to_the_curve(dv, labels.inner, curve_edges) > 0) {
-    repaired = true;
-    curve_edges = curve_edges_per_sample(dv, labels.inner);
-  }
-  if (!every_sample_has_two_curve_edges(dv, curve_edges)) {
-    if (found_missed_curves) return labels;
-    // Step 10 with the labels swapped: outer corridors the crust reads as inside (a stroke
-    // the paper's walk entered through a triangle spanning it), relabelled inner, stand only
-    // if the curve is then a 1-manifold through every sample.
-    const std::vector<int> filled = split_curves_joined_across_a_corridor(dv, labels.inner, 0);
-    std::vector<int> counts;
-    if (!filled.empty()) counts = curve_edges_per_sample(dv, labels.inner);
-    if (filled.empty() || !every_sample_has_two_curve_edges(dv, counts)) {
-      for (int t : filled) labels.inner[t] = 0;
-      take_the_shape_hull_where_one_curve_is_wrong(curve_edges);
-      return labels;
+    // One count of curve edges serves both repairs unless the first changes the labels.
+    std::vector<int> curve_edges = curve_edges_per_sample(dv, labels.inner);
+    if (relabel_bridging_ears(dv, labels.inner, curve_edges) > 0) {
+      repaired = true;
+      curve_edges = curve_edges_per_sample(dv, labels.inner);
     }
-    curve_edges = std::move(counts);
-    repaired = true;
-  }
-  // Corridors without swallowed samples, on a 1-manifold: from every triangle.
-  repaired |= !split_curves_joined_across_a_corridor(dv, labels.inner).empty();
-  if (found_missed_curves) return labels;
-  if (pockets_split_one_curve) {
-    take_the_shape_hull_through_every_sample(dv, labels.inner);
-  } else if (repaired && curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges)) {
-    // Step 12 (shape_hull_where_it_is_shorter.h): repaired labels, one closed curve through
-    // every sample, against shape-hull's tour. Step 10 leaves every sample two curve edges,
-    // so the counts from before it still say which samples are on the curve.
-    take_the_shape_hull_where_it_is_shorter(dv, labels.inner);
-  }
+    repaired |= relabel_inner_vertices_outside_the_hull(dv, labels.inner, curve_edges) > 0;
+    // Steps 6 and 7 change nothing while a sample has no curve edge, so the counts still hold.
+    if (join_lone_samples_to_the_curve(dv, labels.inner, curve_edges) > 0) {
+      repaired = true;
+      curve_edges = curve_edges_per_sample(dv, labels.inner);
+    }
+    if (!every_sample_has_two_curve_edges(dv, curve_edges)) {
+      if (found_missed_curves) return;
+      // Step 10 with the labels swapped: outer corridors the crust reads as inside (a stroke
+      // the paper's walk entered through a triangle spanning it), relabelled inner, stand only
+      // if the curve is then a 1-manifold through every sample.
+      const std::vector<int> filled = split_curves_joined_across_a_corridor(dv, labels.inner, 0);
+      std::vector<int> counts;
+      if (!filled.empty()) counts = curve_edges_per_sample(dv, labels.inner);
+      if (filled.empty() || !every_sample_has_two_curve_edges(dv, counts)) {
+        for (int t : filled) labels.inner[t] = 0;
+        take_the_shape_hull_where_one_curve_is_wrong(curve_edges);
+        return;
+      }
+      curve_edges = std::move(counts);
+      repaired = true;
+    }
+    // Corridors without swallowed samples, on a 1-manifold: from every triangle.
+    repaired |= !split_curves_joined_across_a_corridor(dv, labels.inner).empty();
+    if (found_missed_curves) return;
+    if (pockets_split_one_curve) {
+      take_the_shape_hull_through_every_sample(dv, labels.inner);
+    } else if (repaired && curve_edges_form_one_connected_curve(dv, labels.inner, curve_edges)) {
+      // Step 12 (shape_hull_where_it_is_shorter.h): repaired labels, one closed curve through
+      // every sample, against shape-hull's tour. Step 10 leaves every sample two curve edges,
+      // so the counts from before it still say which samples are on the curve.
+      take_the_shape_hull_where_it_is_shorter(dv, labels.inner);
+    }
+  };
+  repair();
+  close_loops_left_lone(dv, labels.inner, loops);
   return labels;
 }
 

@@ -23,6 +23,7 @@
 #include "labeling-holes/enclosed_samples.h"
 #include "labeling-holes/join_lone_samples_to_the_curve.h"
 #include "labeling-holes/label_voronoi_vertices_with_holes.h"
+#include "labeling-holes/open_loops_of_three_samples.h"
 #include "labeling-holes/open_pockets_closed_at_their_mouths.h"
 #include "labeling-holes/curve_edges_per_sample.h"
 #include "labeling-holes/relabel_bridging_ears.h"
@@ -1267,6 +1268,52 @@ TEST(LabelingHoles, ATipCutOffWithTwoSamplesIsJoinedThroughTheNearestSampleOnThe
     const std::vector<Edge> truth = sorted(input.truth.edges);
     EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), truth) << family;
     EXPECT_NE(sorted(*run("labeling", input.points).curve_edges), truth) << family;
+  }
+}
+
+TEST(LabelingHoles, ATipCutOffIntoALoopOfThreeSamplesIsOpenedAndJoined) {
+  // sparse_outlines.json's horned shape at 50 random samples, seed 7: the paper's curve
+  // joins 31 and 35 by a chord and runs from the horn's tip 32-33-34 across to 49; once the
+  // steps before have taken 33-49 off, the tip is a loop of its own beside the chord.
+  const GeneratedInput input = sparse_outline("horned", 50, 7);
+  const std::vector<Edge> paper = sorted(*run("labeling", input.points).curve_edges);
+  for (const Edge& e : std::vector<Edge>{{31, 35}, {32, 33}, {32, 34}, {33, 49}}) {
+    EXPECT_TRUE(std::binary_search(paper.begin(), paper.end(), e)) << e[0] << "-" << e[1];
+  }
+  EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges));
+}
+
+TEST(LabelingHoles, ALoopOfThreeSamplesNothingJoinsIsClosedAgain) {
+  // An `i`: 44 samples around a 0.2 x 1 stem and a dot of three samples, radius 0.05, 0.5
+  // above it. The paper's loop through the dot is a curve of its own that step 9 cannot join
+  // to the stem: opened, its samples stay lone, and it is closed again.
+  std::vector<Point2> points;
+  const double width = 0.2, height = 1.0, perimeter = 2 * (width + height);
+  for (int i = 0; i < 44; ++i) {
+    const double d = perimeter * i / 44;
+    if (d < width) {
+      points.push_back({d, 0});
+    } else if (d < width + height) {
+      points.push_back({width, d - width});
+    } else if (d < 2 * width + height) {
+      points.push_back({2 * width + height - d, height});
+    } else {
+      points.push_back({0, perimeter - d});
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    const double angle = std::numbers::pi / 2 + 2 * std::numbers::pi * k / 3 + 0.3;
+    points.push_back({0.1 + 0.05 * std::cos(angle), height + 0.55 + 0.05 * std::sin(angle)});
+  }
+  const std::vector<Edge> dot{{44, 45}, {44, 46}, {45, 46}};
+  std::vector<std::uint8_t> inner = label_voronoi_vertices(build_delaunay_voronoi(points)).inner;
+  const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+  ASSERT_EQ(open_loops_of_three_samples(dv, inner).size(), 1u);  // the dot's: the step has work
+  for (const char* algorithm : {"labeling", "labeling-holes"}) {
+    const std::vector<Edge> edges = sorted(*run(algorithm, points).curve_edges);
+    for (const Edge& e : dot) {
+      EXPECT_TRUE(std::binary_search(edges.begin(), edges.end(), e)) << algorithm << ": " << e[0] << "-" << e[1];
+    }
   }
 }
 

@@ -1283,6 +1283,19 @@ TEST(LabelingHoles, ATipCutOffIntoALoopOfThreeSamplesIsOpenedAndJoined) {
   EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges));
 }
 
+TEST(LabelingHoles, ATipPinchedOffAtASampleOfTheCurveIsOpenedAndJoined) {
+  // sharp_corners.json's horned shape at 200 random samples, seed 1: the paper's curve runs
+  // 197-198-1 and the horn's tip is the loop 198-199-0 pinched off at 198, which has four
+  // curve edges. Opened, 199 and 0 are lone, 198 has two, and step 9 joins both, and the
+  // tip 122-123 cut off by the chord 121-124, which 198's pinch had kept it from joining.
+  const GeneratedInput input = sparse_outline("horned", 200, 1);
+  const std::vector<Edge> paper = sorted(*run("labeling", input.points).curve_edges);
+  for (const Edge& e : std::vector<Edge>{{0, 198}, {0, 199}, {1, 198}, {198, 199}, {121, 124}}) {
+    EXPECT_TRUE(std::binary_search(paper.begin(), paper.end(), e)) << e[0] << "-" << e[1];
+  }
+  EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges));
+}
+
 TEST(LabelingHoles, ALoopOfThreeSamplesNothingJoinsIsClosedAgain) {
   // An `i`: 44 samples around a 0.2 x 1 stem and a dot of three samples, radius 0.05, 0.5
   // above it. The paper's loop through the dot is a curve of its own that step 9 cannot join

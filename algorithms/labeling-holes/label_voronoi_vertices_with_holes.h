@@ -25,8 +25,9 @@
 // Without enclosed samples the labels are the paper's, unchanged. Last, the paper's bridges
 // between curves are relabelled: ears through one sample (relabel_bridging_ears.h), then
 // corridors outside the convex hull (relabel_inner_vertices_outside_the_hull.h); and samples
-// the curve passes by (a sparse sharp tip cut off by its chord) are joined to it through the
-// triangle at their curve edge (join_lone_samples_to_the_curve.h), and corridors the local
+// the curve passes by (a sparse sharp tip cut off by its chord, or closed into a loop of three
+// samples of its own, open_loops_of_three_samples.h) are joined to it through the triangle at
+// their curve edge (join_lone_samples_to_the_curve.h), and corridors the local
 // crust test reads as outside are opened (split_curves_joined_across_a_corridor.h). Labels
 // that still leave a sample off the curve or on a pinch, on one connected curve, give way to
 // the shape-hull's triangles when its curve passes through every sample

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -1294,6 +1295,28 @@ TEST(LabelingHoles, ATipPinchedOffAtASampleOfTheCurveIsOpenedAndJoined) {
     EXPECT_TRUE(std::binary_search(paper.begin(), paper.end(), e)) << e[0] << "-" << e[1];
   }
   EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges));
+}
+
+TEST(LabelingHoles, APinchedLoopOpenedAndClosedAgainIsThePapers) {
+  // The paper's labels of the horned shape at 200 random samples, seed 1 (above): the loop
+  // 198-199-0 pinched off at 198. Opened and closed again at once, the labels are the paper's.
+  // Step 9 joins 199 and 0 through the triangles around the loop, whose own triangle then lies
+  // inside the joined tip again.
+  const DelaunayVoronoi dv = build_delaunay_voronoi(sparse_outline("horned", 200, 1).points);
+  const std::vector<std::uint8_t> paper = label_voronoi_vertices(dv).inner;
+  std::vector<std::uint8_t> inner = paper;
+  const std::vector<int> loops = open_loops_of_three_samples(dv, inner);
+  ASSERT_EQ(loops.size(), 1u);
+  std::array<int, 3> corners = dv.triangles[loops[0]];
+  std::sort(corners.begin(), corners.end());
+  EXPECT_EQ(corners, (std::array<int, 3>{0, 198, 199}));
+  EXPECT_EQ(curve_edges_at(dv, inner, 198), 2);
+  std::vector<std::uint8_t> closed = inner;
+  close_loops_left_lone(dv, closed, loops);
+  EXPECT_EQ(closed, paper);
+  ASSERT_GT(join_lone_samples_to_the_curve(dv, inner, curve_edges_per_sample(dv, inner)), 0);
+  EXPECT_EQ(inner[loops[0]], 1);
+  for (int site : {0, 198, 199}) EXPECT_EQ(curve_edges_at(dv, inner, site), 2) << site;
 }
 
 TEST(LabelingHoles, ALoopOfThreeSamplesNothingJoinsIsClosedAgain) {

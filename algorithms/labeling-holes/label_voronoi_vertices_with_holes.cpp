@@ -301,7 +301,8 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   // Missed curves keep their loops, as they keep the other repairs.
   const std::vector<int> loops = found_missed_curves ? std::vector<int>{} : open_loops_of_three_samples(dv, labels.inner);
   repaired = repaired || !loops.empty();
-  // Steps 9-12, ended at the first step that settles the labels.
+  // Steps 6-12 (where evidence is left, step 10 over it and step 11 first), left at the first
+  // step that settles the labels; the loops are looked at again after whichever that is.
   auto repair = [&] {
     // The loop stops with evidence left only where no part was taken: those samples' cells lie
     // in the last region, all of one label, so they have no curve edge, and steps 6, 7 and 10

@@ -299,7 +299,8 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   // Step 9's first part (open_loops_of_three_samples.h), before the counts of step 11 and the
   // repairs: the samples of a tip cut off into a loop of its own are lone once it is opened.
   // Missed curves keep their loops, as they keep the other repairs.
-  const std::vector<int> loops = found_missed_curves ? std::vector<int>{} : open_loops_of_three_samples(dv, labels.inner);
+  const std::vector<OpenedLoop> loops =
+      found_missed_curves ? std::vector<OpenedLoop>{} : open_loops_of_three_samples(dv, labels.inner);
   repaired = repaired || !loops.empty();
   // Steps 6-12 (where evidence is left, step 10 over it and step 11 first), left at the first
   // step that settles the labels; the loops are looked at again after whichever that is.

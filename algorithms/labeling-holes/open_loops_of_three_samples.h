@@ -31,14 +31,20 @@
 
 namespace curvebench {
 
+// A loop relabelled outer: its triangle, and the sample it shares with a curve (-1 if none).
+struct OpenedLoop {
+  int triangle;
+  int shared_sample;
+};
+
 // In:  Delaunay/Voronoi arrays; `inner`, per triangle, 1 for inner (the infinite vertex is
 //      outer).
 // Out: `inner` with the triangles of such loops set to 0; returns them.
-std::vector<int> open_loops_of_three_samples(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner);
+std::vector<OpenedLoop> open_loops_of_three_samples(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner);
 
 // In:  as above, after the other steps; `loops`, what open_loops_of_three_samples returned.
-// Out: `inner` with each loop set to 1 again whose samples have no curve edge, but for one
-//      with exactly two (the sample it shares with a curve).
-void close_loops_left_lone(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner, const std::vector<int>& loops);
+// Out: `inner` with each loop set to 1 again whose own samples (all but the shared one) have
+//      no curve edge.
+void close_loops_left_lone(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner, const std::vector<OpenedLoop>& loops);
 
 }  // namespace curvebench

@@ -1277,10 +1277,8 @@ TEST(LabelingHoles, ATipCutOffIntoALoopOfThreeSamplesIsOpenedAndJoined) {
   // joins 31 and 35 by a chord and runs from the horn's tip 32-33-34 across to 49; once the
   // steps before have taken 33-49 off, the tip is a loop of its own beside the chord.
   const GeneratedInput input = sparse_outline("horned", 50, 7);
-  const std::vector<Edge> paper = sorted(*run("labeling", input.points).curve_edges);
-  for (const Edge& e : std::vector<Edge>{{31, 35}, {32, 33}, {32, 34}, {33, 49}}) {
-    EXPECT_TRUE(std::binary_search(paper.begin(), paper.end(), e)) << e[0] << "-" << e[1];
-  }
+  const std::vector<Edge> cut_off{{31, 35}, {32, 33}, {32, 34}, {33, 49}};
+  EXPECT_EQ(edges_among(sorted(*run("labeling", input.points).curve_edges), cut_off), cut_off);
   EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges));
 }
 
@@ -1290,10 +1288,8 @@ TEST(LabelingHoles, ATipPinchedOffAtASampleOfTheCurveIsOpenedAndJoined) {
   // curve edges. Opened, 199 and 0 are lone, 198 has two, and step 9 joins both, and the
   // tip 122-123 cut off by the chord 121-124, which 198's pinch had kept it from joining.
   const GeneratedInput input = sparse_outline("horned", 200, 1);
-  const std::vector<Edge> paper = sorted(*run("labeling", input.points).curve_edges);
-  for (const Edge& e : std::vector<Edge>{{0, 198}, {0, 199}, {1, 198}, {198, 199}, {121, 124}}) {
-    EXPECT_TRUE(std::binary_search(paper.begin(), paper.end(), e)) << e[0] << "-" << e[1];
-  }
+  const std::vector<Edge> pinched{{0, 198}, {0, 199}, {1, 198}, {121, 124}, {198, 199}};
+  EXPECT_EQ(edges_among(sorted(*run("labeling", input.points).curve_edges), pinched), pinched);
   EXPECT_EQ(sorted(*run("labeling-holes", input.points).curve_edges), sorted(input.truth.edges));
 }
 
@@ -1305,17 +1301,18 @@ TEST(LabelingHoles, APinchedLoopOpenedAndClosedAgainIsThePapers) {
   const DelaunayVoronoi dv = build_delaunay_voronoi(sparse_outline("horned", 200, 1).points);
   const std::vector<std::uint8_t> paper = label_voronoi_vertices(dv).inner;
   std::vector<std::uint8_t> inner = paper;
-  const std::vector<int> loops = open_loops_of_three_samples(dv, inner);
+  const std::vector<OpenedLoop> loops = open_loops_of_three_samples(dv, inner);
   ASSERT_EQ(loops.size(), 1u);
-  std::array<int, 3> corners = dv.triangles[loops[0]];
+  std::array<int, 3> corners = dv.triangles[loops[0].triangle];
   std::sort(corners.begin(), corners.end());
   EXPECT_EQ(corners, (std::array<int, 3>{0, 198, 199}));
+  EXPECT_EQ(loops[0].shared_sample, 198);
   EXPECT_EQ(curve_edges_at(dv, inner, 198), 2);
   std::vector<std::uint8_t> closed = inner;
   close_loops_left_lone(dv, closed, loops);
   EXPECT_EQ(closed, paper);
   ASSERT_GT(join_lone_samples_to_the_curve(dv, inner, curve_edges_per_sample(dv, inner)), 0);
-  EXPECT_EQ(inner[loops[0]], 1);
+  EXPECT_EQ(inner[loops[0].triangle], 1);
   for (int site : {0, 198, 199}) EXPECT_EQ(curve_edges_at(dv, inner, site), 2) << site;
 }
 
@@ -1341,15 +1338,18 @@ TEST(LabelingHoles, ALoopOfThreeSamplesNothingJoinsIsClosedAgain) {
     const double angle = std::numbers::pi / 2 + 2 * std::numbers::pi * k / 3 + 0.3;
     points.push_back({0.1 + 0.05 * std::cos(angle), height + 0.55 + 0.05 * std::sin(angle)});
   }
-  const std::vector<Edge> dot{{44, 45}, {44, 46}, {45, 46}};
-  std::vector<std::uint8_t> inner = label_voronoi_vertices(build_delaunay_voronoi(points)).inner;
   const DelaunayVoronoi dv = build_delaunay_voronoi(points);
-  ASSERT_EQ(open_loops_of_three_samples(dv, inner).size(), 1u);  // the dot's: the step has work
+  std::vector<std::uint8_t> inner = label_voronoi_vertices(dv).inner;
+  const std::vector<OpenedLoop> loops = open_loops_of_three_samples(dv, inner);
+  ASSERT_EQ(loops.size(), 1u);  // the dot's: the step has work
+  std::array<int, 3> corners = dv.triangles[loops[0].triangle];
+  std::sort(corners.begin(), corners.end());
+  std::array<int, 3> dot_sites{dv.site_of_input[44], dv.site_of_input[45], dv.site_of_input[46]};
+  std::sort(dot_sites.begin(), dot_sites.end());
+  EXPECT_EQ(corners, dot_sites);
+  const std::vector<Edge> dot{{44, 45}, {44, 46}, {45, 46}};
   for (const char* algorithm : {"labeling", "labeling-holes"}) {
-    const std::vector<Edge> edges = sorted(*run(algorithm, points).curve_edges);
-    for (const Edge& e : dot) {
-      EXPECT_TRUE(std::binary_search(edges.begin(), edges.end(), e)) << algorithm << ": " << e[0] << "-" << e[1];
-    }
+    EXPECT_EQ(edges_among(sorted(*run(algorithm, points).curve_edges), dot), dot) << algorithm;
   }
 }
 

@@ -16,6 +16,10 @@ namespace curvebench {
 
 std::vector<int> curve_edges_per_sample(const DelaunayVoronoi& dv, const std::vector<std::uint8_t>& inner);
 
+// The label of Voronoi vertex t under `inner`: true for inner. The infinite vertex (kInfinite,
+// across a hull edge) is outer.
+inline bool is_inner(const std::vector<std::uint8_t>& inner, int t) { return t != kInfinite && inner[t] != 0; }
+
 // visit(a, b) for each curve edge, its two sites, once, from its inner side: one pass over the
 // inner triangles.
 template <class Visit>

@@ -5,11 +5,12 @@
 #include <set>
 #include <utility>
 
+#include "labeling-holes/curve_edges_per_sample.h"
+
 namespace curvebench {
 
 std::optional<std::vector<int>> join_lone_samples(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
                                                   std::vector<int> lone) {
-  auto label = [&](int t) { return t != kInfinite && inner[t] != 0; };
   auto distance = [&](int a, int b) { return std::sqrt(squared_distance(dv.sites[a], dv.sites[b])); };
 
   std::set<int> remaining(lone.begin(), lone.end());
@@ -39,7 +40,7 @@ std::optional<std::vector<int>> join_lone_samples(const DelaunayVoronoi& dv, std
     do {
       const int corner = corner_of_site(dv, t, s);
       const int a = dv.triangles[t][(corner + 1) % 3], b = dv.triangles[t][(corner + 2) % 3];
-      const bool on_the_curve = label(t) != label(dv.neighbors[t][corner]);  // the edge a-b
+      const bool on_the_curve = is_inner(inner, t) != is_inner(inner, dv.neighbors[t][corner]);  // the edge a-b
       if (on_the_curve && (a == nearest || b == nearest)) {
         const double detour = distance(s, a) + distance(s, b) - distance(a, b);
         if (detour < best_detour || (detour == best_detour && t < best)) {

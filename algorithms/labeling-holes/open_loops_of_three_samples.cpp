@@ -5,11 +5,10 @@
 namespace curvebench {
 
 std::vector<OpenedLoop> open_loops_of_three_samples(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner) {
-  auto is_inner = [&](int t) { return t != kInfinite && inner[t] != 0; };
   std::vector<OpenedLoop> loops;
   for (int t = 0; t < dv.triangle_count(); ++t) {
     const auto& next = dv.neighbors[t];
-    if (!inner[t] || is_inner(next[0]) || is_inner(next[1]) || is_inner(next[2])) continue;
+    if (!inner[t] || is_inner(inner, next[0]) || is_inner(inner, next[1]) || is_inner(inner, next[2])) continue;
     // Each sample has the loop's two edges; more are those of a curve it lies on.
     int own = 0, shared = -1;
     for (int site : dv.triangles[t]) {

@@ -10,8 +10,6 @@
 namespace curvebench {
 namespace {
 
-bool is_inner(const std::vector<std::uint8_t>& inner, int t) { return t != kInfinite && inner[t] != 0; }
-
 // Whether the edge a-b of triangle t opposite its corner c (index k) is shaped like a mouth:
 // strictly the longest of the three, or c lies within a quarter of |ab| of a or b. Either way
 // c is the first sample down a wall from an end. The second clause is for a wall sample all

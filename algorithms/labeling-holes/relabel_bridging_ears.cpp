@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <limits>
 
+#include "labeling-holes/curve_edges_per_sample.h"
+
 namespace curvebench {
 
 int relabel_bridging_ears(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& inner,
                           const std::vector<int>& curve_edges) {
-  auto is_inner = [&](int t) { return t != kInfinite && inner[t] != 0; };
   // Relabelling ears only takes edges away, so a sample with fewer than two stays so.
   bool manifold = true;
   for (int count : curve_edges) {
@@ -18,7 +19,7 @@ int relabel_bridging_ears(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& 
 
   auto inner_neighbors_of = [&](int t) {
     int count = 0;
-    for (int next : dv.neighbors[t]) count += is_inner(next);
+    for (int next : dv.neighbors[t]) count += is_inner(inner, next);
     return count;
   };
   // The longest curve edge at `site` other than those to `a` and `b` (squared; 0 if none), or
@@ -27,8 +28,8 @@ int relabel_bridging_ears(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& 
   auto longest_other_curve_edge = [&](int site, int a, int b) {
     double longest = 0;
     auto consider = [&](int before, int after, int other) {
-      if (is_inner(after) && inner_neighbors_of(after) == 0) longest = std::numeric_limits<double>::infinity();
-      if (is_inner(before) != is_inner(after) && other != a && other != b) {
+      if (is_inner(inner, after) && inner_neighbors_of(after) == 0) longest = std::numeric_limits<double>::infinity();
+      if (is_inner(inner, before) != is_inner(inner, after) && other != a && other != b) {
         longest = std::max(longest, squared_distance(dv.sites[site], dv.sites[other]));
       }
     };
@@ -52,7 +53,7 @@ int relabel_bridging_ears(const DelaunayVoronoi& dv, std::vector<std::uint8_t>& 
     const auto& neighbors = dv.neighbors[t];
     int inner_neighbors = 0, attached_across = 0;
     for (int k = 0; k < 3; ++k) {
-      if (is_inner(neighbors[k])) {
+      if (is_inner(inner, neighbors[k])) {
         ++inner_neighbors;
         attached_across = k;
       }

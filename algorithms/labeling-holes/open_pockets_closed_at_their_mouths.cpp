@@ -5,6 +5,7 @@
 #include "labeling-holes/curve_edges_per_sample.h"
 #include "labeling-holes/join_lone_samples_to_the_curve.h"
 #include "labeling-holes/missed_curves_stand_apart.h"
+#include "labeling-holes/pocket_refusal_decided_at.h"
 #include "labeling/walk_steps.h"
 
 namespace curvebench {
@@ -125,29 +126,62 @@ OpenedPockets open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std
     for (int site : sites) search[site] = 0;
     return left == 0;
   };
+  auto decided = [&](int t) {
+    if (!is_inner(inner, t)) return PocketVertex::kOuter;
+    if (flags[t] & kInPocket) return PocketVertex::kInPocket;
+    if ((flags[t] & kReached) || !has_an_enclosed_sample(t)) return PocketVertex::kInnerOutside;
+    return PocketVertex::kNotDecided;
+  };
+  // Whether deciding `vertex` has decided the refusal (pocket_refusal_decided_at.h) at one of its samples.
+  // Inserted into a sample's fan, the vertex raises an alternation count only where the
+  // decided vertices nearest it on both sides differ from it: a sample whose neighbouring
+  // triangle through it, on either side, was decided the same way is skipped (for a vertex in
+  // the pocket, that neighbour also puts the fan in the pocket already).
+  auto refusal_decided_by = [&](int vertex) {
+    const PocketVertex kind = decided(vertex);
+    for (int c = 0; c < 3; ++c) {
+      if (decided(dv.neighbors[vertex][(c + 1) % 3]) == kind || decided(dv.neighbors[vertex][(c + 2) % 3]) == kind) {
+        continue;
+      }
+      if (pocket_refusal_decided_at(dv, decided, dv.triangles[vertex][c])) return true;
+    }
+    return false;
+  };
   OpenedPockets opened;
   for (int mouth : mouths) {
+    // Fresh sources and flags: a vertex the last walk stopped may be reached again from this mouth.
+    for (int t : reached) {
+      flags[t] = 0;
+      for (int site : dv.triangles[t]) source[site] = kUnpaired;
+    }
+    reached.clear();
     if (!inner[mouth]) continue;  // in a pocket opened already
     // Algorithm 1 from the mouth, which is taken outer untested (the paper's walk stopped it).
-    reached.clear();
+    // It stops early once the pocket's refusal is decided: where a walk runs on along a noisy
+    // band, the refusal is usually decided at the mouth, and the whole band would otherwise be
+    // walked again from each of its mouths.
     pocket.clear();
     stack.assign(1, mouth);
-    while (!stack.empty()) {
+    bool refused = false;
+    while (!stack.empty() && !refused) {
       const int vertex = stack.back();
       stack.pop_back();
       if (flags[vertex] & kReached) continue;
       flags[vertex] |= kReached;
       reached.push_back(vertex);
       // Gap 2: a vertex across a tangent line ends its branch.
-      if (vertex != mouth && crosses_a_tangent_line(dv, source, vertex)) continue;
-      flags[vertex] |= kInPocket;
-      pocket.push_back(vertex);
-      pair_samples_with(dv, source, vertex);
-      for (int k = 2; k >= 0; --k) {
-        const int next = dv.neighbors[vertex][k];
-        if (is_inner(inner, next) && !(flags[next] & kReached) && has_an_enclosed_sample(next)) stack.push_back(next);
+      if (vertex == mouth || !crosses_a_tangent_line(dv, source, vertex)) {
+        flags[vertex] |= kInPocket;
+        pocket.push_back(vertex);
+        pair_samples_with(dv, source, vertex);
+        for (int k = 2; k >= 0; --k) {
+          const int next = dv.neighbors[vertex][k];
+          if (is_inner(inner, next) && !(flags[next] & kReached) && has_an_enclosed_sample(next)) stack.push_back(next);
+        }
       }
+      refused = refusal_decided_by(vertex);
     }
+    if (refused) continue;
 
     // The pocket's boundary must be one closed curve through each of its samples once. Its walls
     // are the edges that join the curve when it opens; the curve edges on it leave the curve.
@@ -278,12 +312,6 @@ OpenedPockets open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std
     // (the `C` at 50 random samples, seed 3, closed at its mouth 29-48), and is reported.
     opened.split_a_curve = opened.split_a_curve || (take && !a_second_mouth && !on_one_curve(samples));
     if (take) opened.relabelled += static_cast<int>(pocket.size());
-    // Fresh sources and flags for the next mouth: a vertex this walk stopped may be reached
-    // again from another mouth.
-    for (int t : reached) {
-      flags[t] = 0;
-      for (int site : dv.triangles[t]) source[site] = kUnpaired;
-    }
   }
   return opened;
 }

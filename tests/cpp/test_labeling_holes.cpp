@@ -26,6 +26,7 @@
 #include "labeling-holes/label_voronoi_vertices_with_holes.h"
 #include "labeling-holes/open_loops_of_three_samples.h"
 #include "labeling-holes/open_pockets_closed_at_their_mouths.h"
+#include "labeling-holes/pocket_refusal_decided_at.h"
 #include "labeling-holes/curve_edges_per_sample.h"
 #include "labeling-holes/relabel_bridging_ears.h"
 #include "labeling-holes/relabel_inner_vertices_outside_the_hull.h"
@@ -1015,6 +1016,37 @@ TEST(LabelingHoles, ThePocketsOfAnSThePaperClosedOffAreOpened) {
     EXPECT_EQ(sorted(*run("labeling-holes", samples.points).curve_edges), truth) << "seed " << seed;
     EXPECT_NE(sorted(*run("labeling", samples.points).curve_edges), truth) << "seed " << seed;
   }
+}
+
+TEST(LabelingHoles, AWalkFromAMouthStopsOnlyWhereTheDecidedVerticesRefuseItsPocket) {
+  // Sample 0 lies inside the circle through the other five and below the chord from 1 to 2, so
+  // it is a hull sample joined to all of them: a fan of four triangles and the infinite vertex.
+  const std::vector<Point2> points{{0, -0.1}, {3, 0}, {-3, 0}, {2.1, 2.1}, {0, 3}, {-2.1, 2.1}};
+  const DelaunayVoronoi dv = build_delaunay_voronoi(points);
+  std::vector<int> fan;  // counter-clockwise from site_triangle, as the test walks it
+  for (int t = dv.site_triangle[0]; t != kInfinite && (fan.empty() || t != fan.front());) {
+    fan.push_back(t);
+    t = dv.neighbors[t][(corner_of_site(dv, t, 0) + 1) % 3];
+  }
+  ASSERT_EQ(fan.size(), 4u);
+  using enum PocketVertex;
+  auto refused = [&](std::vector<PocketVertex> pattern) {
+    return pocket_refusal_decided_at(dv, [&](int t) {
+      if (t == kInfinite) return kOuter;
+      return pattern[std::find(fan.begin(), fan.end(), t) - fan.begin()];
+    }, 0);
+  };
+  // In the pocket and not, four alternations with the infinite vertex: four boundary edges.
+  EXPECT_TRUE(refused({kInPocket, kInnerOutside, kInPocket, kInnerOutside}));
+  EXPECT_TRUE(refused({kInPocket, kOuter, kInPocket, kNotDecided}));
+  // Only two, whatever is still to be decided in between.
+  EXPECT_FALSE(refused({kInPocket, kNotDecided, kInPocket, kInnerOutside}));
+  // Inner-outside and the rest four times, the infinite vertex one of the rest: four curve
+  // edges once the pocket opens, if the sample is the pocket's.
+  EXPECT_TRUE(refused({kInnerOutside, kInPocket, kInnerOutside, kNotDecided}));
+  EXPECT_FALSE(refused({kInnerOutside, kOuter, kInnerOutside, kNotDecided}));  // no vertex in the pocket: not its sample yet
+  EXPECT_FALSE(refused({kInnerOutside, kInPocket, kNotDecided, kNotDecided}));
+  EXPECT_FALSE(refused({kNotDecided, kNotDecided, kNotDecided, kNotDecided}));
 }
 
 TEST(LabelingHoles, APocketOpensOnlyWhereOneOfItsSamplesJoinsTheCurve) {

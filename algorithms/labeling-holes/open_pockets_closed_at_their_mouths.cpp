@@ -132,20 +132,13 @@ OpenedPockets open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std
     if ((flags[t] & kReached) || !has_an_enclosed_sample(t)) return PocketVertex::kInnerOutside;
     return PocketVertex::kNotDecided;
   };
-  // Whether deciding `vertex` has decided the refusal (pocket_refusal_decided_at.h) at one of its samples.
-  // Inserted into a sample's fan, the vertex raises an alternation count only where the
-  // decided vertices nearest it on both sides differ from it: a sample whose neighbouring
-  // triangle through it, on either side, was decided the same way is skipped (for a vertex in
-  // the pocket, that neighbour also puts the fan in the pocket already).
-  auto refusal_decided_by = [&](int vertex) {
-    const PocketVertex kind = decided(vertex);
-    for (int c = 0; c < 3; ++c) {
-      if (decided(dv.neighbors[vertex][(c + 1) % 3]) == kind || decided(dv.neighbors[vertex][(c + 2) % 3]) == kind) {
-        continue;
-      }
-      if (pocket_refusal_decided_at(dv, decided, dv.triangles[vertex][c])) return true;
-    }
-    return false;
+  // The samples of the vertices a walk has decided since it last looked for a decided refusal,
+  // each once (`awaiting_a_look` marks them).
+  std::vector<int> samples_to_look_at;
+  std::vector<std::uint8_t> awaiting_a_look(dv.site_count(), 0);
+  auto forget_the_samples_to_look_at = [&] {
+    for (int site : samples_to_look_at) awaiting_a_look[site] = 0;
+    samples_to_look_at.clear();
   };
   OpenedPockets opened;
   for (int mouth : mouths) {
@@ -155,14 +148,19 @@ OpenedPockets open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std
       for (int site : dv.triangles[t]) source[site] = kUnpaired;
     }
     reached.clear();
+    forget_the_samples_to_look_at();
     if (!inner[mouth]) continue;  // in a pocket opened already
     // Algorithm 1 from the mouth, which is taken outer untested (the paper's walk stopped it).
-    // It stops early once the pocket's refusal is decided: where a walk runs on along a noisy
-    // band, the refusal is usually decided at the mouth, and the whole band would otherwise be
-    // walked again from each of its mouths.
+    // It stops once the pocket's refusal is decided (pocket_refusal_decided_at.h): where a walk
+    // runs on along a noisy band, that is usually near the mouth, and the whole band would
+    // otherwise be walked again from each of its mouths. It looks each time the number of
+    // vertices it has reached doubles (4, 8, 16, ...), at the samples of the vertices decided
+    // since: a walk stops at most twice as far as it could have, and one that opens its pocket
+    // looks at each sample about once, instead of once for each vertex of its fan.
     pocket.clear();
     stack.assign(1, mouth);
     bool refused = false;
+    std::size_t next_look = 4;
     while (!stack.empty() && !refused) {
       const int vertex = stack.back();
       stack.pop_back();
@@ -179,7 +177,16 @@ OpenedPockets open_pockets_closed_at_their_mouths(const DelaunayVoronoi& dv, std
           if (is_inner(inner, next) && !(flags[next] & kReached) && has_an_enclosed_sample(next)) stack.push_back(next);
         }
       }
-      refused = refusal_decided_by(vertex);
+      for (int site : dv.triangles[vertex]) {
+        if (!awaiting_a_look[site]) samples_to_look_at.push_back(site);
+        awaiting_a_look[site] = 1;
+      }
+      if (reached.size() == next_look) {
+        next_look *= 2;
+        refused = std::any_of(samples_to_look_at.begin(), samples_to_look_at.end(),
+                              [&](int site) { return pocket_refusal_decided_at(dv, decided, site); });
+        forget_the_samples_to_look_at();
+      }
     }
     if (refused) continue;
 

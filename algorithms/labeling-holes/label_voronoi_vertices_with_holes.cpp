@@ -231,13 +231,8 @@ VoronoiLabels label_voronoi_vertices_with_holes(const DelaunayVoronoi& dv) {
   // they do, else the labels are as they came.
   auto open_corridors_over_the_evidence = [&] {
     std::vector<int> around;
-    for (int site : enclosed) {
-      const int first = dv.site_triangle[site];
-      int t = first;
-      do {  // an enclosed sample's fan is closed and all inner
-        around.push_back(t);
-        t = dv.neighbors[t][(corner_of_site(dv, t, site) + 1) % 3];
-      } while (t != first);
+    for (int site : enclosed) {  // an enclosed sample's fan is closed and all inner
+      for_each_voronoi_vertex_around(dv, site, [&](int t) { around.push_back(t); });
     }
     const std::vector<int> opened = split_curves_joined_across_a_corridor(dv, labels.inner, around);
     if (opened.empty()) return false;

@@ -11,7 +11,8 @@
 // In:  Delaunay/Voronoi arrays; `decided(t)`, how the walk has decided Voronoi vertex t so far
 //      (t may be kInfinite); a sample with a cell.
 // Out: true if the decided vertices of the sample's fan, in cyclic order (a hull sample's
-//      infinite vertex one of them, outer), show one of the two alternations.
+//      infinite vertex one of them, which `decided` must call outer), show one of the two
+//      alternations.
 #pragma once
 
 #include <cstdint>
@@ -44,13 +45,7 @@ bool pocket_refusal_decided_at(const DelaunayVoronoi& dv, Decided&& decided, int
     last_in = in;
     last_outside = outside;
   };
-  const int first = dv.site_triangle[site];
-  int t = first;
-  do {
-    add(decided(t));
-    t = dv.neighbors[t][(corner_of_site(dv, t, site) + 1) % 3];
-  } while (t != kInfinite && t != first);
-  if (t == kInfinite) add(PocketVertex::kOuter);
+  for_each_voronoi_vertex_around(dv, site, [&](int t) { add(decided(t)); });
   if (first_in >= 0) {  // the cycle closes
     in_alternations += last_in != first_in;
     outside_alternations += last_outside != first_outside;

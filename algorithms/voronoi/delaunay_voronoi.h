@@ -70,6 +70,20 @@ inline int corner_of_site(const DelaunayVoronoi& dv, int triangle, int site) {
   return t[0] == site ? 0 : (t[1] == site ? 1 : 2);
 }
 
+// visit(t) for each triangle of the fan of `site` (which must have a cell, site_triangle >= 0),
+// counter-clockwise from site_triangle, and then visit(kInfinite) for a hull site, whose fan
+// is open: the infinite vertex closes its cycle of Voronoi vertices.
+template <class Visit>
+void for_each_voronoi_vertex_around(const DelaunayVoronoi& dv, int site, Visit&& visit) {
+  const int first = dv.site_triangle[site];
+  int t = first;
+  do {
+    visit(t);
+    t = dv.neighbors[t][(corner_of_site(dv, t, site) + 1) % 3];
+  } while (t != kInfinite && t != first);
+  if (t == kInfinite) visit(kInfinite);
+}
+
 // Whether pred(q) holds for some Delaunay neighbour q of `site` (which must have a cell,
 // site_triangle >= 0): its fan walked counter-clockwise from site_triangle, each triangle's
 // other two corners asked in turn, stopping at the first that holds.

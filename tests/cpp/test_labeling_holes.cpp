@@ -1023,18 +1023,13 @@ TEST(LabelingHoles, AWalkFromAMouthStopsOnlyWhereTheDecidedVerticesRefuseItsPock
   // it is a hull sample joined to all of them: a fan of four triangles and the infinite vertex.
   const std::vector<Point2> points{{0, -0.1}, {3, 0}, {-3, 0}, {2.1, 2.1}, {0, 3}, {-2.1, 2.1}};
   const DelaunayVoronoi dv = build_delaunay_voronoi(points);
-  std::vector<int> fan;  // counter-clockwise from site_triangle, as the test walks it
-  for (int t = dv.site_triangle[0]; t != kInfinite && (fan.empty() || t != fan.front());) {
-    fan.push_back(t);
-    t = dv.neighbors[t][(corner_of_site(dv, t, 0) + 1) % 3];
-  }
+  std::vector<int> fan = testing::voronoi_cell(dv, 0);  // the cyclic order the rule reads
   ASSERT_EQ(fan.size(), 4u);
+  fan.push_back(kInfinite);
   using enum PocketVertex;
   auto refused = [&](std::vector<PocketVertex> pattern) {
-    return pocket_refusal_decided_at(dv, [&](int t) {
-      if (t == kInfinite) return kOuter;
-      return pattern[std::find(fan.begin(), fan.end(), t) - fan.begin()];
-    }, 0);
+    pattern.push_back(kOuter);  // the infinite vertex
+    return pocket_refusal_decided_at(dv, [&](int t) { return pattern[std::find(fan.begin(), fan.end(), t) - fan.begin()]; }, 0);
   };
   // In the pocket and not, four alternations with the infinite vertex: four boundary edges.
   EXPECT_TRUE(refused({kInPocket, kInnerOutside, kInPocket, kInnerOutside}));

@@ -145,6 +145,19 @@ TEST(VoronoiLayer, HullCellWalkCoversTheWholeFan) {
   EXPECT_EQ(total, 3 * dv.triangle_count());
 }
 
+TEST(VoronoiLayer, TheVoronoiVerticesAroundASiteAreItsCellThenTheInfiniteVertexOnTheHull) {
+  for (const auto& points : {uniform_circle(12), rose_in_curve_order(300, 3)}) {
+    const auto dv = build_delaunay_voronoi(points);
+    for (int s = 0; s < dv.site_count(); ++s) {
+      std::vector<int> around;
+      for_each_voronoi_vertex_around(dv, s, [&](int t) { around.push_back(t); });
+      std::vector<int> expected = voronoi_cell(dv, s);
+      if (dv.on_hull[s]) expected.push_back(kInfinite);
+      EXPECT_EQ(around, expected) << "site " << s;
+    }
+  }
+}
+
 TEST(VoronoiLayer, DuplicatesMapToTheirFirstOccurrence) {
   const std::vector<Point2> points{{0, 0}, {1, 0}, {0, 0}, {0, 1}, {1, 0}, {1, 1}};
   const auto dv = build_delaunay_voronoi(points);

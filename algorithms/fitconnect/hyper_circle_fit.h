@@ -7,9 +7,10 @@
 //      (collinear) case.
 // Out: centre and radius. The characteristic quartic is solved by Newton's method from 0
 //      (at most 99 steps, stopping when a step no longer lowers |P|). When the determinant D
-//      falls below the absolute 1e-20 of the authors' code, the centre is set off the
-//      centroid by the unit normal of points 0 -> 1 scaled by 1/sqrt(z) of the last point,
-//      as they do; the radius may then be NaN, which FitConnect reads as "not conforming".
+//      falls below the absolute 1e-20 of the authors' code and the points are collinear at
+//      their own scale too (D at most 1e-10 of m_z^2; the .cpp says why), the centre is set
+//      off the centroid by the unit normal of points 0 -> 1 scaled by 1/sqrt(z) of the last
+//      point, as they do; the radius may then be NaN, which FitConnect reads as "not conforming".
 //      `on_a_line` says so: the points are (nearly) collinear, and that circle stands for the
 //      line only as far as FitConnect's decisions go, not as a curve to move points onto.
 #pragma once

@@ -66,6 +66,33 @@ TEST(FitConnect, HyperFitOfCollinearPointsTakesTheDegenerateBranch) {
   EXPECT_FALSE(hyper_circle_fit(std::vector<Point2>{{0, 0}, {1, 0.1}, {2, 0}}).on_a_line);
 }
 
+TEST(FitConnect, HyperFitTakesTheDegenerateBranchForCollinearPointsOnlyAtEveryScale) {
+  // D scales with the fourth power of the units: this arc's is 0.48 at scale 1 and 4.8e-25
+  // at scale 1e-6, where the authors' absolute test (D < 1e-20) alone calls it a line.
+  for (double scale : {1e-6, 1e-4, 1.0, 1e4}) {
+    std::vector<Point2> arc;
+    for (double t : {0.3, 0.5, 0.9, 1.4, 2.0}) arc.push_back({scale * (2.0 + 3.0 * std::cos(t)), scale * (-1.0 + 3.0 * std::sin(t))});
+    const FittedCircle circle = hyper_circle_fit(arc);
+    EXPECT_FALSE(circle.on_a_line) << "scale " << scale;
+    EXPECT_NEAR(circle.radius / scale, 3.0, 1e-6) << "scale " << scale;
+    const std::vector<Point2> line = {{0, 0}, {scale, 0}, {2 * scale, 0}};
+    EXPECT_TRUE(hyper_circle_fit(line).on_a_line) << "scale " << scale;
+  }
+}
+
+TEST(FitConnect, EdgesDoNotDependOnTheInputsUnits) {
+  // 2 000 samples of a circle, each coordinate moved by up to half their spacing: at scale
+  // 1e-4 a fit's neighbourhood is about 1e-7 units wide and 1e-6 long, and the absolute test
+  // alone took such fits for lines.
+  const std::vector<Point2> points = jittered(testing::uniform_circle(2000), 0.5 * 2 * std::numbers::pi / 2000, 7);
+  const std::vector<Edge> edges = fitconnect(points).edges;
+  for (double scale : {1e-4, 1e4}) {
+    std::vector<Point2> scaled = points;
+    for (Point2& p : scaled) p = {scale * p.x, scale * p.y};
+    EXPECT_EQ(fitconnect(scaled).edges, edges) << "scale " << scale;
+  }
+}
+
 TEST(FitConnect, TheBlendLeavesSamplesWhoseFitIsALineWhereTheyAre) {
   // Every side of the square holds samples whose neighbourhoods lie on it: their fits take
   // the degenerate branch, and blending onto its fallback circle (about a unit off the side)

@@ -66,12 +66,14 @@ TEST(FitConnect, HyperFitOfCollinearPointsTakesTheDegenerateBranch) {
   EXPECT_FALSE(hyper_circle_fit(std::vector<Point2>{{0, 0}, {1, 0.1}, {2, 0}}).on_a_line);
 }
 
-TEST(FitConnect, HyperFitTakesTheDegenerateBranchForCollinearPointsOnlyAtEveryScale) {
+TEST(FitConnect, HyperFitTakesTheDegenerateBranchOnlyForCollinearPointsAtEveryScale) {
   // D scales with the fourth power of the units: this arc's is 0.48 at scale 1 and 4.8e-25
   // at scale 1e-6, where the authors' absolute test (D < 1e-20) alone calls it a line.
   for (double scale : {1e-6, 1e-4, 1.0, 1e4}) {
     std::vector<Point2> arc;
-    for (double t : {0.3, 0.5, 0.9, 1.4, 2.0}) arc.push_back({scale * (2.0 + 3.0 * std::cos(t)), scale * (-1.0 + 3.0 * std::sin(t))});
+    for (double t : {0.3, 0.5, 0.9, 1.4, 2.0}) {
+      arc.push_back({scale * (2.0 + 3.0 * std::cos(t)), scale * (-1.0 + 3.0 * std::sin(t))});
+    }
     const FittedCircle circle = hyper_circle_fit(arc);
     EXPECT_FALSE(circle.on_a_line) << "scale " << scale;
     EXPECT_NEAR(circle.radius / scale, 3.0, 1e-6) << "scale " << scale;

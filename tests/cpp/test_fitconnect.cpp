@@ -71,9 +71,7 @@ TEST(FitConnect, HyperFitTakesTheDegenerateBranchOnlyForCollinearPointsAtEverySc
   // at scale 1e-6, where the authors' absolute test (D < 1e-20) alone calls it a line.
   for (double scale : {1e-6, 1e-4, 1.0, 1e4}) {
     std::vector<Point2> arc;
-    for (double t : {0.3, 0.5, 0.9, 1.4, 2.0}) {
-      arc.push_back({scale * (2.0 + 3.0 * std::cos(t)), scale * (-1.0 + 3.0 * std::sin(t))});
-    }
+    for (double t : {0.3, 0.5, 0.9, 1.4, 2.0}) arc.push_back(scale * Point2{2.0 + 3.0 * std::cos(t), -1.0 + 3.0 * std::sin(t)});
     const FittedCircle circle = hyper_circle_fit(arc);
     EXPECT_FALSE(circle.on_a_line) << "scale " << scale;
     EXPECT_NEAR(circle.radius / scale, 3.0, 1e-6) << "scale " << scale;
@@ -90,7 +88,7 @@ TEST(FitConnect, EdgesDoNotDependOnTheInputsUnits) {
   const std::vector<Edge> edges = fitconnect(points).edges;
   for (double scale : {1e-4, 1e4}) {
     std::vector<Point2> scaled = points;
-    for (Point2& p : scaled) p = {scale * p.x, scale * p.y};
+    for (Point2& p : scaled) p = scale * p;
     EXPECT_EQ(fitconnect(scaled).edges, edges) << "scale " << scale;
   }
 }

@@ -49,7 +49,8 @@ std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv
   std::vector<int> corridor, stack, touched;
   std::vector<Edge> removed, added;
   std::vector<int> change(dv.site_count(), 0);  // per sample: curve edges gained minus lost
-  // Per sample: its curve edges, counted once (a fan walk) and then kept up to date, or -1.
+  // Per sample: its curve edges, counted once (a fan walk) and then kept up to date, or -1 until
+  // a corridor needs it.
   std::vector<int> count(dv.site_count(), -1);
   std::vector<std::uint8_t> touched_now(dv.site_count(), 0);  // per sample: on the corridor growing
   std::vector<int> relabelled;
@@ -102,10 +103,15 @@ std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv
       ++change[e[0]];
       ++change[e[1]];
     }
+    // Up to the first sample left with other than two: a corridor refused there is refused.
+    // A count not taken now is taken when a later corridor needs it, from the labels as they
+    // are then, which is what the count kept up to date would be (the interior a rejected
+    // curve edge grows into touches nearly every sample, and its first few refuse it).
     bool manifold = true;
-    for (int site : touched) {
+    for (std::size_t i = 0; i < touched.size() && manifold; ++i) {
+      const int site = touched[i];
       if (count[site] < 0) count[site] = curve_edges_at(dv, inner, site);
-      manifold = manifold && count[site] + change[site] == 2;
+      manifold = count[site] + change[site] == 2;
     }
     if (manifold) {
       for (int t : corridor) inner[t] = 1 - side;

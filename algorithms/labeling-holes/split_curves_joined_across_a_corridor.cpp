@@ -103,10 +103,10 @@ std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv
       ++change[e[0]];
       ++change[e[1]];
     }
-    // Up to the first sample left with other than two: a corridor refused there is refused.
-    // A count not taken now is taken when a later corridor needs it, from the labels as they
-    // are then, which is what the count kept up to date would be (the interior a rejected
-    // curve edge grows into touches nearly every sample, and its first few refuse it).
+    // Counted up to the first sample the corridor would leave with other than two curve edges,
+    // which refuses it. A count not taken here is taken when a later corridor needs it, from the
+    // labels as they are then, and equals the count kept up to date. (From a rejected curve edge
+    // the corridor can be the whole interior, touching nearly every sample; its first refuse it.)
     bool manifold = true;
     for (std::size_t i = 0; i < touched.size() && manifold; ++i) {
       const int site = touched[i];

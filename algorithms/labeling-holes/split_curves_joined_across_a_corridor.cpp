@@ -107,12 +107,10 @@ std::vector<int> split_curves_joined_across_a_corridor(const DelaunayVoronoi& dv
     // which refuses it. A count not taken here is taken when a later corridor needs it, from the
     // labels as they are then, and equals the count kept up to date. (From a rejected curve edge
     // the corridor can be the whole interior, touching nearly every sample; its first refuse it.)
-    bool manifold = true;
-    for (std::size_t i = 0; i < touched.size() && manifold; ++i) {
-      const int site = touched[i];
+    const bool manifold = std::all_of(touched.begin(), touched.end(), [&](int site) {
       if (count[site] < 0) count[site] = curve_edges_at(dv, inner, site);
-      manifold = count[site] + change[site] == 2;
-    }
+      return count[site] + change[site] == 2;
+    });
     if (manifold) {
       for (int t : corridor) inner[t] = 1 - side;
       for (int site : touched) count[site] += change[site];
